@@ -1,0 +1,1 @@
+"""Benchmarks run by `usv-station bench NAME`; results are recorded in benchmarks/RESULTS.md."""

@@ -1,0 +1,165 @@
+"""`usv-station`: the single command-line entry point (shared/DESIGN.md "Command line").
+
+Exit codes: 0 success, 2 invalid input (one line on stderr naming the field),
+3 no feasible plan (one line with the reason), 1 an unexpected error.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+from typing import Any
+
+from usvstation import __version__
+from usvstation.runtime import tune_allocator
+
+EXIT_OK, EXIT_ERROR, EXIT_INVALID, EXIT_INFEASIBLE = 0, 1, 2, 3
+
+
+class CliError(Exception):
+    """An error reported as one line on stderr with an exit code."""
+
+    def __init__(self, message: str, code: int) -> None:
+        super().__init__(message)
+        self.code = code
+
+
+def _parse_setting(text: str) -> tuple[str, Any]:
+    """KEY=VALUE with VALUE as JSON (numbers, true/false, strings)."""
+    key, sep, raw = text.partition("=")
+    if not sep or not key:
+        raise argparse.ArgumentTypeError(f"expected KEY=VALUE, got {text!r}")
+    try:
+        value = json.loads(raw)
+    except json.JSONDecodeError:
+        value = raw
+    return key.strip(), value
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="usv-station",
+        description="Shore station for USV stern-ramp recovery (IGA planning, boat link, console).",
+    )
+    parser.add_argument("--version", action="version", version=f"usv-station {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+
+    plan = sub.add_parser(
+        "plan",
+        help="plan a scenario with the IGA",
+        description=(
+            "Plan a scenario file (or a bundled scenario by name: case1..case4). "
+            "Prints the plan JSON when --json is given or stdout is not a terminal, "
+            "else a readable summary. Exit 2: invalid input; exit 3: no feasible plan."
+        ),
+    )
+    plan.add_argument("scenario", help="scenario JSON file, or the name of a bundled scenario")
+    plan.add_argument("--planner", default="iga", choices=["iga"], help="planner (default iga)")
+    plan.add_argument("--seed", type=int, default=None,
+                      help="random seed (default: the scenario's, else 1)")
+    plan.add_argument("--json", action="store_true", help="print the plan as JSON")
+    plan.add_argument("--out", type=Path, help="also write the plan JSON to this file")
+    plan.add_argument(
+        "--set", dest="settings", action="append", default=[], type=_parse_setting,
+        metavar="KEY=VALUE", help="override a planner option, e.g. --set population=120",
+    )
+
+    bench = sub.add_parser("bench", help="run a benchmark and print its figures")
+    bench.add_argument("name", choices=["planner"], help="which benchmark")
+    bench.add_argument("--json", action="store_true", help="print one JSON object (default)")
+    bench.add_argument("--scenarios", type=Path, help="folder of scenarios (default: public suite)")
+    bench.add_argument("--seeds", type=int, default=5, help="seeds per scenario (default 5)")
+    bench.add_argument("--random", type=int, default=100,
+                       help="random scenarios for the validity rate (default 100, 0 to skip)")
+    bench.add_argument("--quick", action="store_true",
+                       help="fewer repetitions, for a smoke test (figures not for the record)")
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    tune_allocator()
+    args = build_parser().parse_args(argv)
+    try:
+        if args.command == "plan":
+            return _cmd_plan(args)
+        if args.command == "bench":
+            return _cmd_bench(args)
+    except CliError as exc:
+        print(f"usv-station {args.command}: {exc}", file=sys.stderr)
+        return exc.code
+    except KeyboardInterrupt:
+        print("usv-station: interrupted", file=sys.stderr)
+        return 130
+    return EXIT_ERROR
+
+
+def _cmd_plan(args: argparse.Namespace) -> int:
+    from pydantic import ValidationError
+
+    from usvstation.planning.plan import NoFeasiblePlan, plan_scenario
+    from usvstation.scenario import ScenarioError, format_validation_error, load_scenario
+
+    try:
+        scenario = load_scenario(args.scenario)
+        plan = plan_scenario(scenario, planner=args.planner, seed=args.seed, **dict(args.settings))
+    except ScenarioError as exc:
+        raise CliError(f"invalid scenario: {exc}", EXIT_INVALID) from None
+    except ValidationError as exc:
+        raise CliError(f"invalid option: planner.{format_validation_error(exc)}",
+                       EXIT_INVALID) from None
+    except NoFeasiblePlan as exc:
+        raise CliError(str(exc), EXIT_INFEASIBLE) from None
+    text = json.dumps(plan, indent=2)
+    if args.out:
+        try:
+            args.out.write_text(text + "\n", encoding="utf-8")
+        except OSError as exc:
+            raise CliError(f"cannot write {args.out}: {exc.strerror}", EXIT_INVALID) from None
+    if args.json or not sys.stdout.isatty():
+        print(text)
+    else:
+        print(format_plan(plan))
+    return EXIT_OK
+
+
+def format_plan(plan: dict[str, Any]) -> str:
+    """A readable summary of a plan for a terminal."""
+    m = plan["metrics"]
+    clearance = "n/a" if m["min_clearance_m"] is None else f"{m['min_clearance_m']:.2f} m"
+    lines = [
+        f"{plan['scenario']}: {plan['planner']} plan, seed {plan['seed']}: "
+        f"{len(plan['waypoints'])} waypoints, {m['length_m']:.1f} m in {m['duration_s']:.1f} s, "
+        f"min clearance {clearance}",
+        f"fitness {m['fitness']:.4f} (Fit_d {m['fit_d']:.3f}, Fit_T {m['fit_t']:.2f} s, "
+        f"Fit_ang {m['fit_ang']:.3f}, Fit_mal {m['fit_mal']:.2f} m); "
+        f"{m['generations']} generations in {m['elapsed_s'] * 1000:.0f} ms ({m['stop_reason']})",
+        "",
+        f"{'#':>3} {'x (m)':>9} {'y (m)':>9} {'t (s)':>8} {'speed (m/s)':>12} "
+        f"{'heading (deg)':>14}",
+    ]
+    for i, w in enumerate(plan["waypoints"]):
+        lines.append(
+            f"{i:>3} {w['x']:>9.2f} {w['y']:>9.2f} {w['t']:>8.2f} {w['speed']:>12.2f} "
+            f"{w['heading_deg']:>14.1f}"
+        )
+    return "\n".join(lines)
+
+
+def _cmd_bench(args: argparse.Namespace) -> int:
+    from usvstation.bench.planner import run_planner_bench
+
+    try:
+        result = run_planner_bench(
+            folder=args.scenarios, seeds=args.seeds, random_count=args.random, quick=args.quick,
+            progress=lambda msg: print(msg, file=sys.stderr, flush=True),
+        )
+    except (FileNotFoundError, ValueError) as exc:
+        raise CliError(str(exc), EXIT_INVALID) from None
+    print(json.dumps(result, indent=2))
+    return EXIT_OK
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,164 @@
+"""Fitness of paper 000 eq. 12, evaluated for a whole population at once.
+
+    Fitness = G_acc G_vel G_col G_turn * A / (a Fit_d + b Fit_T + c Fit_ang + d Fit_mal)
+
+    Fit_d   = sum of segment lengths / straight start-goal distance
+    Fit_T   = sum of segment durations / (N - 1)              (mean segment time, s)
+    Fit_ang = sum over inner waypoints of (pi - theta) / pi    (theta: inner angle)
+    Fit_mal = sum of |y_i| / N                                 (malposition, m)
+
+The hard gates are 1 when the constraint holds on every segment and 0
+otherwise: G_acc (|dv|/dT <= accel_max), G_vel (speed_min <= v <= speed_max),
+G_col (no segment enters an inflated obstacle, eq. 9), and G_turn, the
+vessel's turn limit, which this project adds as a further gate. A transit
+drops the ramp alignment term (d = 0).
+
+The weights and why they were chosen are in docs/planner.md.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from usvstation.planning.encoding import PathBatch
+from usvstation.planning.options import IGAOptions
+from usvstation.planning.problem import Problem
+from usvstation.planning.xyt import hits_from_relative, polyline_hits, relative_positions
+
+_EPS = 1e-9
+
+
+@dataclass(frozen=True)
+class Evaluation:
+    """Fitness, its four terms and the hard gates for every path of a batch."""
+
+    fitness: np.ndarray
+    fit_d: np.ndarray
+    fit_t: np.ndarray
+    fit_ang: np.ndarray
+    fit_mal: np.ndarray
+    g_acc: np.ndarray
+    g_vel: np.ndarray
+    g_col: np.ndarray
+    g_turn: np.ndarray
+    violations: np.ndarray  # count of violated segment/waypoint constraints
+
+    @property
+    def feasible(self) -> np.ndarray:
+        return self.g_acc & self.g_vel & self.g_col & self.g_turn
+
+    def row(self, i: int) -> dict[str, float | bool]:
+        return {
+            name: (bool(val[i]) if val.dtype == bool else float(val[i]))
+            for name, val in self.__dict__.items()
+        }
+
+
+def segment_headings(paths: PathBatch) -> np.ndarray:
+    """Heading of every segment, radians anticlockwise from +x."""
+    return np.arctan2(paths.seg_dy, paths.seg_dx)
+
+
+def turn_angles(headings: np.ndarray) -> np.ndarray:
+    """|pi - theta| at every inner waypoint: the change of heading, radians in [0, pi]."""
+    d = headings[:, 1:] - headings[:, :-1]
+    return np.abs(np.mod(d + np.pi, 2.0 * np.pi) - np.pi)
+
+
+def collision_matrix(paths: PathBatch, problem: Problem) -> np.ndarray:
+    """(M, S, P): segment s of path p enters inflated obstacle m (eq. 9)."""
+    f = problem.obstacles
+    ex, ey = relative_positions(paths.x.T, paths.y.T, paths.t.T, f)  # (M, N, P)
+    return polyline_hits(ex, ey, f.inflated[:, None, None], axis=1)
+
+
+class Evaluator:
+    """Eq. 12 for batches of paths of one problem.
+
+    Given the x-range every segment can span (the encoding fixes it: segment
+    s runs between waypoint blocks s-1 and s), static obstacles whose
+    inflated circle cannot reach that range are never tested against it;
+    the remaining (segment, obstacle) pairs are tested exactly with eq. 9.
+    Without ranges every pair is tested.
+    """
+
+    def __init__(self, problem: Problem, opts: IGAOptions,
+                 segment_x_range: tuple[np.ndarray, np.ndarray] | None = None) -> None:
+        self.problem, self.opts = problem, opts
+        self.pairs: tuple[np.ndarray, np.ndarray] | None = None
+        f = problem.obstacles
+        if segment_x_range is not None and f.count:
+            lo, hi = segment_x_range
+            cx, r = f.centre[:, 0], f.inflated
+            near = (cx[None, :] + r >= lo[:, None]) & (cx[None, :] - r <= hi[:, None])
+            seg, obs = np.nonzero(near | ~f.static[None, :])
+            col = f.centre[obs], f.velocity[obs]
+            self.pairs = (seg, obs)
+            self._pair_obs = (col[0][:, 0], col[0][:, 1], col[1][:, 0], col[1][:, 1], r[obs])
+
+    def collisions(self, paths: PathBatch) -> np.ndarray:
+        """Number of (segment, obstacle) pairs in collision, per path."""
+        if self.problem.obstacles.count == 0:
+            return np.zeros(len(paths), dtype=np.int64)
+        if self.pairs is None:
+            return collision_matrix(paths, self.problem).sum(axis=(0, 1))
+        seg = self.pairs[0]
+        cx, cy, vx, vy, r = self._pair_obs
+        t0, t1 = paths.t[:, seg], paths.t[:, seg + 1]
+        hits = hits_from_relative(
+            paths.x[:, seg] - (cx + vx * t0), paths.y[:, seg] - (cy + vy * t0),
+            paths.x[:, seg + 1] - (cx + vx * t1), paths.y[:, seg + 1] - (cy + vy * t1), r,
+        )
+        return hits.sum(axis=1)
+
+    def __call__(self, paths: PathBatch) -> Evaluation:
+        """Gates, terms and fitness (eq. 12, or the EG3 linear penalty) of every path."""
+        problem, opts = self.problem, self.opts
+        turns = turn_angles(segment_headings(paths))
+        v2 = paths.v * paths.v
+        # |dv| / dT <= a_max with dT = 2 L / (v0 + v1)  <=>  |v1^2 - v0^2| <= 2 a_max L
+        acc_bad = np.abs(v2[:, 1:] - v2[:, :-1]) > (2.0 * problem.accel_max * (1.0 + _EPS)) * (
+            paths.seg_len + _EPS
+        )
+        acc_bad |= paths.seg_len <= _EPS
+        vel_bad = (paths.v < problem.speed_min - _EPS) | (paths.v > problem.speed_max + _EPS)
+        turn_bad = turns > problem.turn_max + _EPS
+        n_col = self.collisions(paths)
+
+        n = paths.x.shape[1]
+        fit_d = paths.seg_len.sum(axis=1) / max(problem.distance, _EPS)
+        fit_t = paths.t[:, -1] / (n - 1)
+        fit_ang = turns.sum(axis=1) / np.pi
+        fit_mal = np.abs(paths.y).sum(axis=1) / n
+        n_acc, n_vel, n_turn = acc_bad.sum(axis=1), vel_bad.sum(axis=1), turn_bad.sum(axis=1)
+        g_acc, g_vel, g_col, g_turn = n_acc == 0, n_vel == 0, n_col == 0, n_turn == 0
+        violations = n_acc + n_vel + n_turn + n_col
+
+        if opts.fitness == "linear":
+            fitness = _linear_penalty(fit_d, violations, opts)
+        else:
+            d = opts.weight_d if problem.recovery else 0.0
+            denom = opts.weight_a * fit_d + opts.weight_b * fit_t + opts.weight_c * fit_ang
+            denom += d * fit_mal
+            fitness = np.where(violations == 0, opts.scale_A / denom, 0.0)
+        return Evaluation(
+            fitness=fitness, fit_d=fit_d, fit_t=fit_t, fit_ang=fit_ang, fit_mal=fit_mal,
+            g_acc=g_acc, g_vel=g_vel, g_col=g_col, g_turn=g_turn, violations=violations,
+        )
+
+
+def evaluate(paths: PathBatch, problem: Problem, opts: IGAOptions) -> Evaluation:
+    """Eq. 12 for any batch of paths, testing every segment against every obstacle."""
+    return Evaluator(problem, opts)(paths)
+
+
+def _linear_penalty(fit_d: np.ndarray, violations: np.ndarray, opts: IGAOptions) -> np.ndarray:
+    """EG3 (section 4.2): a simple linear penalty on length and violated constraints.
+
+    F = A (1 - (Fit_d - 1)) - A/4 * violations, floored at 0. It has no time,
+    turning or malposition term and no hard gates.
+    """
+    raw = opts.scale_A * (2.0 - fit_d) - 0.25 * opts.scale_A * violations
+    return np.where(np.isfinite(raw), np.maximum(raw, 0.0), 0.0)

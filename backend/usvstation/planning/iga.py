@@ -1,0 +1,279 @@
+"""The improved genetic algorithm (IGA) of paper 000 section 3.2, Algorithm 1.
+
+    Foundation()            preheating: collision-free initial population
+    while not converged:    (fitness threshold, stall, or 500 generations)
+        Elit_Strategy()     the best ~10 % pass unchanged (elite group)
+        Tournament()        parents by tournament selection
+        TransferBinary(), Variation_binary(), TransferDecimal()
+                            single-point binary crossover and bit-flip mutation,
+                            then decode-and-map (eq. 10-11)
+        TimeReset(), FitnessReset()
+                            eq. 11 times and eq. 12 fitness for the whole population
+        Intraspecific()     SSIH: fitness-0 individuals die, are re-initialised
+                            locally and hybridised (Fig. 8)
+
+The genome is the paper's binary string. It is stored packed, one integer
+per gene (`codes`, shape (P, genes)), and the operators act on its bits with
+masks: a single-point crossover at bit c takes every bit before c from one
+parent and the rest from the other, a mutation flips single bits. Every step
+works on the whole population per NumPy call; the only Python loop is over
+generations.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from usvstation.planning.encoding import GeneLayout, PathBatch
+from usvstation.planning.fitness import Evaluation, Evaluator
+from usvstation.planning.options import IGAOptions
+from usvstation.planning.preheat import PreheatReport, preheat, random_levels
+from usvstation.planning.problem import Problem
+
+
+@dataclass
+class IGAResult:
+    """Best path found, its evaluation and how the run went."""
+
+    layout: GeneLayout
+    best: PathBatch  # one row
+    evaluation: Evaluation  # one row
+    generations: int
+    stop_reason: str
+    elapsed_s: float
+    history_best: list[float] = field(default_factory=list)
+    history_elite_mean: list[float] = field(default_factory=list)
+    preheat: PreheatReport | None = None
+    evaluations: int = 0
+
+    @property
+    def feasible(self) -> bool:
+        return bool(self.evaluation.feasible[0]) and float(self.evaluation.fitness[0]) > 0.0
+
+
+@dataclass
+class _Population:
+    codes: np.ndarray  # (P, G) packed binary genes
+    fit: np.ndarray  # (P,)
+
+
+def run_iga(problem: Problem, opts: IGAOptions, layout: GeneLayout | None = None) -> IGAResult:
+    """Plan with the IGA; deterministic for a given `opts.seed`."""
+    t0 = time.perf_counter()
+    rng = np.random.default_rng(opts.seed)
+    layout = layout or GeneLayout.build(problem, opts)
+    pop_n, n_elite = opts.population, opts.elite_count
+    pm = opts.mutation_rate or min(0.5, 1.5 / layout.n_bits)
+
+    evaluator = Evaluator(problem, opts, layout.segment_x_range())
+
+    def fitness(codes: np.ndarray) -> np.ndarray:
+        return evaluator(layout.decode_codes(codes)).fitness
+
+    levels, fresh, report = _foundation(layout, problem, opts, rng)
+    codes = layout.levels_to_codes(levels)
+    pop = _Population(codes, fitness(codes))
+    evaluations = pop_n
+
+    best_codes, best_fit = pop.codes[np.argmax(pop.fit)].copy(), float(pop.fit.max())
+    hist_best, hist_elite = [best_fit], [_elite_mean(pop.fit, n_elite)]
+    stop, gen = "generations_max", 0
+    n_newborn = pop_n // 2  # SSIH candidates per generation, sized from the last death toll
+    while gen < opts.generations_max:
+        gen += 1
+        order = np.argsort(-pop.fit, kind="stable")
+        elite = order[:n_elite]
+        children = _offspring(layout, pop, pop_n - n_elite, opts, pm, rng)
+        newborn = children[:0]
+        if opts.ssih:
+            parents = pop.codes[order[: max(n_elite, 1)]] if best_fit > 0.0 else children[:0]
+            newborn, fresh, report = _newborns(
+                layout, problem, opts, rng, parents, fresh, n_newborn, report
+            )
+        batch_fit = fitness(np.vstack([children, newborn]))
+        evaluations += batch_fit.shape[0]
+        child_fit, born_fit = batch_fit[: children.shape[0]], batch_fit[children.shape[0] :]
+        if opts.ssih:
+            n_dead = int(np.count_nonzero(child_fit <= 0.0))
+            children, child_fit = _sacrifice(children, child_fit, newborn, born_fit)
+            n_newborn = min(pop_n, max(8, (3 * n_dead) // 2))
+        pop = _Population(
+            np.vstack([pop.codes[elite], children]), np.concatenate([pop.fit[elite], child_fit])
+        )
+        i = int(np.argmax(pop.fit))
+        if pop.fit[i] > best_fit:
+            best_fit, best_codes = float(pop.fit[i]), pop.codes[i].copy()
+        hist_best.append(best_fit)
+        hist_elite.append(_elite_mean(pop.fit, n_elite))
+        reason = _converged(hist_best, opts)
+        if reason:
+            stop = reason
+            break
+
+    best = layout.decode_codes(best_codes[None, :])
+    return IGAResult(
+        layout=layout, best=best, evaluation=evaluator(best), generations=gen,
+        stop_reason=stop, elapsed_s=time.perf_counter() - t0, history_best=hist_best,
+        history_elite_mean=hist_elite, preheat=report, evaluations=evaluations,
+    )
+
+
+def _foundation(
+    layout: GeneLayout, problem: Problem, opts: IGAOptions, rng: np.random.Generator
+) -> tuple[np.ndarray, np.ndarray, PreheatReport]:
+    """Initial population (levels), a stock of fresh preheated paths for SSIH, the report.
+
+    With preheating (Algorithm 1 lines 2-18) the population is grown
+    collision-free, with a surplus kept as fresh stock; EG1 starts from
+    random bits instead.
+    """
+    pop_n = opts.population
+    if not opts.preheat:
+        empty = np.zeros((0, layout.n_genes), dtype=np.int64)
+        return random_levels(layout, rng, pop_n), empty, PreheatReport()
+    grown, ok, report = preheat(layout, problem, opts, rng, (3 * pop_n) // 2, need=pop_n)
+    grown = grown[ok]
+    levels, fresh = grown[:pop_n], grown[pop_n:]
+    if levels.shape[0] < pop_n:
+        levels = np.vstack([levels, random_levels(layout, rng, pop_n - levels.shape[0])])
+    return levels, layout.levels_to_codes(fresh), report
+
+
+def _elite_mean(fit: np.ndarray, n_elite: int) -> float:
+    k = max(n_elite, 1)
+    return float(np.mean(np.partition(fit, -k)[-k:]))
+
+
+def _offspring(layout: GeneLayout, pop: _Population, n: int, opts: IGAOptions, pm: float,
+               rng: np.random.Generator) -> np.ndarray:
+    """Tournament selection, single-point binary crossover and bit-flip mutation."""
+    if n <= 0:
+        return pop.codes[:0]
+    pop_n = pop.codes.shape[0]
+    pairs = (n + 1) // 2
+    entrants = rng.integers(0, pop_n, size=(2 * pairs, opts.tournament_size))
+    winners = entrants[np.arange(2 * pairs), np.argmax(pop.fit[entrants], axis=1)]
+    a, b = pop.codes[winners[:pairs]], pop.codes[winners[pairs:]]
+    cross = rng.random(pairs) < opts.crossover_rate
+    cut = np.where(cross, rng.integers(1, max(layout.n_bits, 2), size=pairs), layout.n_bits)
+    children = np.vstack(single_point_crossover(layout, a, b, cut))[:n]
+    return mutate(layout, children, pm, rng)
+
+
+def single_point_crossover(
+    layout: GeneLayout, a: np.ndarray, b: np.ndarray, cut: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """Children taking bits [0, cut) from one parent and [cut, n_bits) from the other.
+
+    `cut` = n_bits copies the parents unchanged.
+    """
+    whole = cut >= layout.n_bits
+    cut = np.minimum(cut, layout.n_bits - 1)
+    g = layout.gene_of_bit[cut]
+    width = layout.gene_bits[g]
+    from_b = (np.int64(1) << (width - (cut - layout.gene_start[g]))) - 1  # low bits of gene g
+    from_b = np.where(whole, 0, from_b)
+    first = (np.arange(layout.n_genes) < g[:, None]) | whole[:, None]
+    c1, c2 = np.where(first, a, b), np.where(first, b, a)
+    rows = np.arange(a.shape[0])
+    ag, bg = a[rows, g], b[rows, g]
+    c1[rows, g] = (ag & ~from_b) | (bg & from_b)
+    c2[rows, g] = (bg & ~from_b) | (ag & from_b)
+    return c1, c2
+
+
+def mutate(
+    layout: GeneLayout, codes: np.ndarray, pm: float, rng: np.random.Generator
+) -> np.ndarray:
+    """Flip every bit independently with probability pm."""
+    total = codes.shape[0] * layout.n_bits
+    flat = rng.choice(total, size=rng.binomial(total, pm), replace=False)
+    row, bit = np.divmod(flat, layout.n_bits)
+    out = codes.copy()
+    np.bitwise_xor.at(out, (row, layout.gene_of_bit[bit]), np.int64(1) << layout.bit_shift[bit])
+    return out
+
+
+def _newborns(
+    layout: GeneLayout, problem: Problem, opts: IGAOptions, rng: np.random.Generator,
+    parents: np.ndarray, fresh: np.ndarray, n: int, report: PreheatReport,
+) -> tuple[np.ndarray, np.ndarray, PreheatReport]:
+    """SSIH's newborns (codes): mostly local re-initialisations of elite paths, some fresh.
+
+    Without a living elite (EG1's random start) the newborns are preheated
+    directly. Returns (newborns, fresh stock left, report).
+    """
+    if parents.shape[0] == 0 and fresh.shape[0] == 0:
+        grown, ok, rep = preheat(layout, problem, opts, rng, n)
+        report.merge(rep)
+        fresh = layout.levels_to_codes(grown[ok])
+    n_fresh = min(fresh.shape[0], n if parents.shape[0] == 0 else max(1, n // 5))
+    pool = [fresh[:n_fresh]]
+    if parents.shape[0]:
+        local = local_reinit(layout, rng, layout.codes_to_levels(parents), n - n_fresh)
+        pool.append(layout.levels_to_codes(local))
+    return np.vstack(pool), fresh[n_fresh:], report
+
+
+def _sacrifice(
+    children: np.ndarray, child_fit: np.ndarray, newborn: np.ndarray, born_fit: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """Strategy of Sacrifice and Intraspecific Hybridisation (paper 000 Fig. 8).
+
+    Children with fitness 0 die and their slots go to the fittest feasible
+    newborns; the newborns are hybridised with the rest of the population by
+    the next generation's crossover.
+    """
+    dead = np.flatnonzero(child_fit <= 0.0)
+    alive = np.flatnonzero(born_fit > 0.0)
+    if dead.size == 0 or alive.size == 0:
+        return children, child_fit
+    alive = alive[np.argsort(-born_fit[alive], kind="stable")][: dead.size]
+    slots = dead[: alive.size]
+    children, child_fit = children.copy(), child_fit.copy()
+    children[slots], child_fit[slots] = newborn[alive], born_fit[alive]
+    return children, child_fit
+
+
+def local_reinit(
+    layout: GeneLayout, rng: np.random.Generator, parents: np.ndarray, n: int
+) -> np.ndarray:
+    """Re-initialise a window of waypoints of random parents (levels), smoothly.
+
+    A window of 0-3 waypoints either side of a random centre is redrawn: y is
+    displaced by a tent-shaped bump (so turns stay gentle) whose amplitude is
+    log-uniform between 0.6 and 12 m (mostly fine adjustments, some detours),
+    x is redrawn inside its D_SL block and speeds move by one level.
+    """
+    n_mid = layout.n_mid
+    lv = parents[rng.integers(0, parents.shape[0], size=n)]
+    centre = rng.integers(0, n_mid, size=(n, 1))
+    half = rng.integers(0, 4, size=(n, 1))
+    weight = np.maximum(1.0 - np.abs(np.arange(n_mid) - centre) / (half + 1.0), 0.0)
+    sign = np.where(rng.random((n, 1)) < 0.5, -1.0, 1.0)
+    amp = sign * np.exp(rng.uniform(np.log(0.6), np.log(12.0), size=(n, 1))) / layout.y_res
+    u = rng.random((n, n_mid))
+    window = weight > 0.0
+    xs, ys, vs = lv[:, 0 : 3 * n_mid : 3], lv[:, 1 : 3 * n_mid : 3], lv[:, 2 : 3 * n_mid : 3]
+    xs[:] = np.where(window & (u < 0.3), (u * (layout.x_count / 0.3)).astype(np.int64), xs)
+    ys += np.rint(amp * weight).astype(np.int64)
+    vs += window * (np.floor(u * 9.0).astype(np.int64) % 3 - 1)
+    return layout.clip_levels(lv)
+
+
+def _converged(hist: list[float], opts: IGAOptions) -> str | None:
+    """Stop at the fitness threshold, on stalled progress, or when nothing feasible appears."""
+    best = hist[-1]
+    if opts.fitness_target is not None and best >= opts.fitness_target:
+        return "fitness_target"
+    n = opts.stall_generations
+    if len(hist) > n:
+        before = hist[-1 - n]
+        if best > 0.0 and best <= before * (1.0 + opts.stall_tolerance):
+            return "converged"
+        if best <= 0.0 and len(hist) > 2 * n:
+            return "no_feasible_individual"
+    return None

@@ -1,0 +1,185 @@
+"""Plan a scenario and build the stable plan output (shared/DESIGN.md "Plan output")."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+from scipy import ndimage
+
+from usvstation.planning.encoding import InfeasibleProblem
+from usvstation.planning.iga import IGAResult, run_iga
+from usvstation.planning.options import IGAOptions
+from usvstation.planning.problem import Problem
+from usvstation.planning.smoothing import smooth_path
+from usvstation.planning.xyt import ObstacleField
+from usvstation.scenario import Scenario
+
+PLANNERS = ("iga",)
+
+
+class NoFeasiblePlan(RuntimeError):
+    """No plan meets every hard constraint; the message gives the reason."""
+
+
+def plan_scenario(
+    scenario: Scenario, planner: str = "iga", seed: int | None = None, **overrides: Any
+) -> dict[str, Any]:
+    """Plan `scenario`; return the stable plan dict or raise NoFeasiblePlan."""
+    if planner not in PLANNERS:
+        raise ValueError(f"planner: unknown planner {planner!r}; available: {', '.join(PLANNERS)}")
+    if seed is not None:
+        overrides["seed"] = seed
+    opts = scenario.planner_options(**overrides)
+    problem = Problem.from_scenario(scenario)
+    try:
+        result = run_iga(problem, opts)
+    except InfeasibleProblem as exc:
+        raise NoFeasiblePlan(f"no feasible plan: {exc}") from None
+    if not result.feasible:
+        raise NoFeasiblePlan(f"no feasible plan: {explain_infeasible(problem, result)}")
+    return build_plan(scenario, problem, opts, result)
+
+
+def build_plan(
+    scenario: Scenario, problem: Problem, opts: IGAOptions, result: IGAResult
+) -> dict[str, Any]:
+    """Waypoints in the scenario frame plus metrics, in the stable plan format."""
+    best, ev = result.best, result.evaluation
+    xs, ys = problem.to_scenario_frame(best.x[0], best.y[0])
+    t, v = best.t[0], best.v[0]
+    seg_heading = np.arctan2(np.diff(ys), np.diff(xs))
+    heading_deg = np.degrees(np.append(seg_heading, seg_heading[-1])) % 360.0
+    waypoints = [
+        {"x": _r(x), "y": _r(y), "t": _r(tt), "speed": _r(vv), "heading_deg": _r(h)}
+        for x, y, tt, vv, h in zip(xs, ys, t, v, heading_deg, strict=True)
+    ]
+    field = scenario_field(scenario)
+    row = ev.row(0)
+    plan: dict[str, Any] = {
+        "planner": "iga",
+        "scenario": scenario.name,
+        "seed": opts.seed,
+        "waypoints": waypoints,
+        "metrics": {
+            "fitness": _r(row["fitness"]),
+            "fit_d": _r(row["fit_d"]),
+            "fit_t": _r(row["fit_t"]),
+            "fit_mal": _r(row["fit_mal"]),
+            "fit_ang": _r(row["fit_ang"]),
+            "length_m": _r(float(best.seg_len.sum())),
+            "duration_s": _r(float(t[-1])),
+            "min_clearance_m": _r(field.clearance(xs, ys, t)),
+            "collision_free": bool(row["g_col"]),
+            "generations": result.generations,
+            "elapsed_s": round(result.elapsed_s, 6),
+            "stop_reason": result.stop_reason,
+            "evaluations": result.evaluations,
+            "max_turn_deg": _r(_max_turn_deg(seg_heading)),
+            "arrival_heading_deg": _r(float(heading_deg[-1])),
+        },
+        "encoding": {
+            "intermediate_waypoints": result.layout.n_mid,
+            "bits": {
+                "x": int(result.layout.gene_bits[0]),
+                "y": int(result.layout.gene_bits[1]),
+                "speed": int(result.layout.gene_bits[2]),
+            },
+            "total_bits": result.layout.n_bits,
+        },
+        "history": {
+            "best": [_r(f) for f in result.history_best],
+            "elite_mean": [_r(f) for f in result.history_elite_mean],
+        },
+    }
+    if opts.smoothing:
+        plan["smoothed"] = smooth_path(xs, ys, t, field)
+    return plan
+
+
+def scenario_field(scenario: Scenario) -> ObstacleField:
+    """Obstacles of a scenario in its own frame (raw and inflated radii)."""
+    obs = scenario.obstacles
+    v = scenario.vessel
+    radius = np.array([o.radius for o in obs], dtype=float)
+    return ObstacleField(
+        centre=np.array([[o.x, o.y] for o in obs], dtype=float).reshape(-1, 2),
+        velocity=np.array([[o.vx, o.vy] for o in obs], dtype=float).reshape(-1, 2),
+        radius=radius,
+        inflated=radius + v.length + v.compensation_radius,
+    )
+
+
+def explain_infeasible(problem: Problem, result: IGAResult) -> str:
+    """Why no plan was found: an enclosed goal, or where candidate paths were blocked."""
+    enclosed = enclosing_obstacles(problem)
+    if enclosed is not None:
+        names = ", ".join(f"obstacles[{i}]" for i in enclosed)
+        return (
+            f"the goal is enclosed: {names} (inflated by eq. 7) leave no free water "
+            "between start and goal"
+        )
+    report = result.preheat
+    parts = [
+        f"no path met the turn limit ({math.degrees(problem.turn_max):g} deg), the "
+        f"acceleration limit ({problem.accel_max:g} m/s^2) and clearance in "
+        f"{result.generations} generations"
+    ]
+    if report and report.blocked_at:
+        k = max(report.blocked_at, key=report.blocked_at.get)
+        parts.append(f"candidates were blocked most often at intermediate waypoint {k + 1}")
+    if report is not None and report.obstacle_hits is not None and report.obstacle_hits.any():
+        top = np.argsort(-report.obstacle_hits)[:3]
+        top = [int(i) for i in top if report.obstacle_hits[i] > 0]
+        parts.append("mostly by " + ", ".join(f"obstacles[{i}]" for i in top))
+    return "; ".join(parts)
+
+
+def enclosing_obstacles(problem: Problem, cell: float = 0.5) -> list[int] | None:
+    """Static obstacles that cut the goal off from the start, or None if water connects them.
+
+    Rasterises the inflated static circles and labels the free water
+    (scipy.ndimage); used to explain a failure, not to plan.
+    """
+    f = problem.obstacles
+    static = np.flatnonzero(f.static)
+    if static.size == 0:
+        return None
+    pts = np.vstack([problem.start, problem.goal, f.centre[static]])
+    r = f.inflated[static]
+    lo = pts.min(axis=0) - r.max() - 5.0
+    hi = pts.max(axis=0) + r.max() + 5.0
+    cell = max(cell, float(np.max(hi - lo)) / 1500.0)
+    gx = np.arange(lo[0], hi[0], cell)
+    gy = np.arange(lo[1], hi[1], cell)
+    xx, yy = np.meshgrid(gx, gy, indexing="ij")
+    blocked = np.zeros(xx.shape, dtype=bool)
+    for c, rad in zip(f.centre[static], r, strict=True):
+        blocked |= (xx - c[0]) ** 2 + (yy - c[1]) ** 2 < rad**2
+    labels, _ = ndimage.label(~blocked)
+
+    def label_at(p: np.ndarray) -> int:
+        i, j = np.clip(((p - lo) / cell).astype(int), 0, np.array(xx.shape) - 1)
+        return int(labels[i, j])
+
+    goal_label, start_label = label_at(problem.goal), label_at(problem.start)
+    if goal_label == 0 or goal_label == start_label:
+        return None
+    ring = ndimage.binary_dilation(labels == goal_label) & blocked
+    near = [
+        int(i) for i, c, rad in zip(static, f.centre[static], r, strict=True)
+        if np.any((xx[ring] - c[0]) ** 2 + (yy[ring] - c[1]) ** 2 < rad**2)
+    ]
+    return near
+
+
+def _max_turn_deg(headings: np.ndarray) -> float:
+    if headings.size < 2:
+        return 0.0
+    d = np.abs(np.mod(np.diff(headings) + np.pi, 2 * np.pi) - np.pi)
+    return float(np.degrees(d.max()))
+
+
+def _r(value: float | None) -> float | None:
+    return None if value is None else round(float(value), 6)

@@ -1,0 +1,266 @@
+"""Preheating: collision-free population initialisation (paper 000 Algorithm 1, lines 2-18).
+
+Every individual is grown waypoint by waypoint from the start towards the
+goal; a new point is kept only if the segment that reaches it is free of
+every obstacle (eq. 9) and respects the turn and acceleration limits,
+otherwise it is drawn again, at most `preheat_retries` times (the paper's
+N_max "to prevent program crashes"); an individual that stays blocked is
+restarted from the start, at most `preheat_restarts` times.
+
+The loop runs over waypoints and retries, never over individuals: each
+draw proposes `candidates` points for every pending individual at once and
+keeps one admissible point per individual.
+
+Candidates head for an aim point within a random bearing spread of +-55
+degrees, narrowed over the last waypoints so the path can still turn onto
+the goal. A transit aims at the goal. A recovery aims at a point on the ramp
+axis that each individual draws between the run-in and the start, and
+follows the axis from there: the population holds paths that join the axis
+early (small malposition, Fit_mal) and late (short, Fit_d). Half of the
+individuals keep the admissible candidate closest to the aim (near-straight
+paths that detour only where they must), the other half a random admissible
+one (wide detours on either side). Three quarters of the candidate speeds
+are the fastest the acceleration limit allows, the rest uniform in the
+reachable range.
+
+Only obstacles that can reach a waypoint block's x-range are tested there:
+moving ones always, static ones when their inflated circle overlaps it.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from usvstation.planning.encoding import GeneLayout
+from usvstation.planning.options import IGAOptions
+from usvstation.planning.problem import Problem
+from usvstation.planning.xyt import Num, hits_from_relative
+
+_MAX_SLOPE = math.radians(80.0)  # steepest segment against the x step
+_SPREAD = math.radians(55.0)  # bearing spread of candidates around the aim
+_EPS = 1e-9
+
+
+@dataclass
+class PreheatReport:
+    """Where preheating got stuck; feeds the "no feasible plan" reason."""
+
+    requested: int = 0
+    produced: int = 0
+    blocked_at: dict[int, int] = field(default_factory=dict)  # waypoint index -> count
+    obstacle_hits: np.ndarray | None = None  # per obstacle, rejected candidates
+
+    def merge(self, other: PreheatReport) -> None:
+        self.requested += other.requested
+        self.produced += other.produced
+        for k, n in other.blocked_at.items():
+            self.blocked_at[k] = self.blocked_at.get(k, 0) + n
+        if other.obstacle_hits is not None:
+            self.obstacle_hits = (
+                other.obstacle_hits.copy() if self.obstacle_hits is None
+                else self.obstacle_hits + other.obstacle_hits
+            )
+
+
+@dataclass(frozen=True)
+class _Obstacles:
+    """A subset of the obstacles shaped (m, 1, 1) for broadcasting against (n, C) candidates."""
+
+    index: np.ndarray
+    cx: np.ndarray
+    cy: np.ndarray
+    vx: np.ndarray
+    vy: np.ndarray
+    r: np.ndarray
+
+    def relative(self, x: Num, y: Num, t: Num) -> tuple[np.ndarray, np.ndarray]:
+        return x - (self.cx + self.vx * t), y - (self.cy + self.vy * t)
+
+
+@dataclass
+class _Walk:
+    """Per-individual state of the walk towards the goal."""
+
+    x: np.ndarray
+    y: np.ndarray
+    t: np.ndarray
+    v: np.ndarray
+    slope: np.ndarray  # bearing of the last segment against -x, rad (nan before the first)
+    greedy: np.ndarray  # keeps the admissible candidate closest to the aim
+    join_x: np.ndarray  # recovery: where this individual aims to join the ramp axis
+
+
+class _Grower:
+    """Grows batches of individuals for one layout (the context of Algorithm 1's loop)."""
+
+    def __init__(self, layout: GeneLayout, problem: Problem, opts: IGAOptions,
+                 rng: np.random.Generator, report: PreheatReport) -> None:
+        self.layout, self.problem, self.opts, self.rng = layout, problem, opts, rng
+        self.report = report
+        if report.obstacle_hits is None:
+            report.obstacle_hits = np.zeros(problem.obstacles.count, dtype=np.int64)
+        self.near = [self._near_block(k) for k in range(layout.n_mid + 1)]
+        self.v2min, self.v2max = problem.speed_min**2, problem.speed_max**2
+        last = layout.n_mid - 1
+        self.run_in = float(layout.x_of(layout.x_count[last] // 2, last))
+
+    def _near_block(self, k: int) -> _Obstacles:
+        """Obstacles that can touch a segment ending in block k (k = n_mid: the goal leg)."""
+        lay, f = self.layout, self.problem.obstacles
+        top = float(lay.start[0]) if k == 0 else float(lay.x_of(lay.x_count[k - 1], k - 1))
+        bottom = float(lay.goal[0]) if k >= lay.n_mid else float(lay.x_of(0, k))
+        reach = f.inflated + lay.x_res
+        near = (f.centre[:, 0] + reach >= bottom) & (f.centre[:, 0] - reach <= top)
+        idx = np.flatnonzero(near | ~f.static)
+        col = (slice(None), None, None)
+        return _Obstacles(
+            index=idx, cx=f.centre[idx, 0][col], cy=f.centre[idx, 1][col],
+            vx=f.velocity[idx, 0][col], vy=f.velocity[idx, 1][col], r=f.inflated[idx][col],
+        )
+
+    def grow(self, count: int) -> tuple[np.ndarray, np.ndarray]:
+        lay = self.layout
+        levels = np.zeros((count, lay.n_genes), dtype=np.int64)
+        alive = np.ones(count, dtype=bool)
+        walk = _Walk(
+            x=np.full(count, lay.start[0]), y=np.full(count, lay.start[1]),
+            t=np.zeros(count), v=np.full(count, lay.start_speed),
+            slope=np.full(count, np.nan), greedy=self.rng.random(count) < 0.5,
+            join_x=self.rng.uniform(self.run_in, float(lay.start[0]), size=count),
+        )
+        for k in range(lay.n_mid):
+            pending = np.flatnonzero(alive)
+            for _ in range(self.opts.preheat_retries):
+                if pending.size == 0:
+                    break
+                pending = pending[~self._draw(k, walk, pending, levels)]
+            if pending.size:
+                alive[pending] = False
+                self.report.blocked_at[k] = self.report.blocked_at.get(k, 0) + int(pending.size)
+        return levels, alive
+
+    def _draw(self, k: int, walk: _Walk, idx: np.ndarray, levels: np.ndarray) -> np.ndarray:
+        """One draw of candidates for waypoint k of individuals `idx`; True where placed."""
+        lay, prob, rng = self.layout, self.problem, self.rng
+        n, c = idx.size, self.opts.candidates
+        px, py, pt, pv = (a[idx, None] for a in (walk.x, walk.y, walk.t, walk.v))
+        slope0 = walk.slope[idx, None]
+        last = k == lay.n_mid - 1
+
+        xl = rng.integers(0, lay.x_count[k], size=(n, c))
+        x = lay.x_of(xl, k)
+        dx = px - x  # > 0: the path steps towards the goal
+        ax, ay = self._aim(k, px, walk.join_x[idx, None])
+        taper = min(1.0, max(0.2, (lay.n_mid - 1 - k) / 3.0))
+        offset = rng.uniform(-1.0, 1.0, size=(n, c))
+        slope = np.arctan2(ay - py, px - ax) + (taper * _SPREAD) * offset
+        if k == 0:
+            lo, hi = -_MAX_SLOPE, _MAX_SLOPE
+        else:
+            lo = np.maximum(slope0 - prob.turn_max, -_MAX_SLOPE)
+            hi = np.minimum(slope0 + prob.turn_max, _MAX_SLOPE)
+        y = py + dx * np.tan(np.clip(slope, lo, hi))
+        if last and lay.cone_tan is not None:
+            m = lay.cone_half_levels(xl)
+            cell = np.clip(np.rint(y / lay.y_res), -m, m)
+            y, yl = cell * lay.y_res, (cell + m).astype(np.int64)
+        else:
+            yl = lay.y_level(y)
+            y = lay.y_of(yl)
+        slope = np.arctan2(y - py, dx)
+        seg = np.hypot(dx, y - py)
+        vl, v, t, good = self._speed(pv, pt, seg)
+        if k > 0:
+            good &= np.abs(slope - slope0) <= prob.turn_max + _EPS
+        good &= self._free(self.near[k], px, py, pt, x, y, t)
+        if last:
+            gx, gy = float(lay.goal[0]), float(lay.goal[1])
+            gseg = np.hypot(x - gx, y - gy)
+            good &= np.abs(np.arctan2(gy - y, x - gx) - slope) <= prob.turn_max + _EPS
+            gvl, _, gt, gok = self._speed(v, t, gseg)
+            good &= gok & self._free(self.near[k + 1], x, y, t, gx, gy, gt)
+
+        placed = good.any(axis=1)
+        key = np.where(walk.greedy[idx, None], np.abs(offset), rng.random((n, c)))
+        col = np.argmin(np.where(good, key, np.inf), axis=1)
+        rows = np.flatnonzero(placed)
+        pick, who = (rows, col[rows]), idx[rows]
+        levels[who, 3 * k] = xl[pick]
+        levels[who, 3 * k + 1] = yl[pick]
+        levels[who, 3 * k + 2] = vl[pick]
+        walk.slope[who] = slope[pick]
+        walk.x[who], walk.y[who], walk.t[who], walk.v[who] = x[pick], y[pick], t[pick], v[pick]
+        if last:
+            levels[who, -1] = gvl[pick]
+        return placed
+
+    def _aim(self, k: int, px: np.ndarray, join_x: np.ndarray) -> tuple[np.ndarray, float]:
+        """Aim point (x, y): the goal, or a point on the ramp axis for a recovery."""
+        lay = self.layout
+        gx, gy = float(lay.goal[0]), float(lay.goal[1])
+        if lay.cone_tan is None or k == lay.n_mid - 1:
+            return np.full_like(px, gx), gy
+        return np.where(px > join_x + lay.x_res, join_x, self.run_in), gy
+
+    def _speed(
+        self, pv: np.ndarray, pt: np.ndarray, seg: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """A speed level reachable over `seg` within accel_max: (level, v, t, admissible)."""
+        lay = self.layout
+        reach, pv2 = (2.0 * self.problem.accel_max) * seg, pv * pv
+        jlo, jhi = lay.v_level_range(
+            np.sqrt(np.maximum(pv2 - reach, self.v2min)),
+            np.sqrt(np.minimum(pv2 + reach, self.v2max)),
+        )
+        # three quarters of the draws take the fastest reachable speed, the rest are uniform
+        u = self.rng.uniform(0.0, 4.0, size=seg.shape)
+        vl = np.where(u >= 1.0, jhi, np.minimum(jlo + (u * (jhi - jlo + 1)).astype(np.int64), jhi))
+        v = lay.v_of(vl)
+        return vl, v, pt + 2.0 * seg / (pv + v), jlo <= jhi
+
+    def _free(
+        self, obs: _Obstacles, px: Num, py: Num, pt: Num, x: Num, y: Num, t: Num
+    ) -> np.ndarray:
+        """True where the segment misses every inflated obstacle of `obs` (eq. 9)."""
+        if obs.index.size == 0:
+            return np.ones(np.shape(x), dtype=bool)
+        ex0, ey0 = obs.relative(px, py, pt)
+        ex1, ey1 = obs.relative(x, y, t)
+        hits = hits_from_relative(ex0, ey0, ex1, ey1, obs.r)  # (m, n, C)
+        self.report.obstacle_hits[obs.index] += hits.sum(axis=(1, 2))
+        return ~hits.any(axis=0)
+
+
+def preheat(
+    layout: GeneLayout, problem: Problem, opts: IGAOptions, rng: np.random.Generator,
+    count: int, need: int | None = None,
+) -> tuple[np.ndarray, np.ndarray, PreheatReport]:
+    """Grow `count` individuals; returns (levels (count, G), ok (count,), report).
+
+    While fewer than `need` (default: all) are grown, the blocked ones are
+    restarted from the start, at most `preheat_restarts` times.
+    """
+    need = count if need is None else need
+    report = PreheatReport(requested=count)
+    grower = _Grower(layout, problem, opts, rng, report)
+    levels = np.zeros((count, layout.n_genes), dtype=np.int64)
+    ok = np.zeros(count, dtype=bool)
+    todo = np.arange(count)
+    for _ in range(opts.preheat_restarts + 1):
+        if todo.size == 0 or ok.sum() >= need:
+            break
+        lv, good = grower.grow(todo.size)
+        levels[todo[good]] = lv[good]
+        ok[todo[good]] = True
+        todo = todo[~good]
+    report.produced = int(ok.sum())
+    return levels, ok, report
+
+
+def random_levels(layout: GeneLayout, rng: np.random.Generator, count: int) -> np.ndarray:
+    """EG1: an unheated population, uniform random bits decoded and mapped."""
+    bits = rng.integers(0, 2, size=(count, layout.n_bits), dtype=np.uint8)
+    return layout.codes_to_levels(layout.bits_to_codes(bits))
