@@ -135,6 +135,14 @@ def _foundation(
         empty = np.zeros((0, layout.n_genes), dtype=np.int64)
         return random_levels(layout, rng, pop_n), empty, PreheatReport()
     grown, ok, report = preheat(layout, problem, opts, rng, (3 * pop_n) // 2, need=pop_n)
+    if ok.sum() < max(4, pop_n // 4):
+        # hard problem: one more round with many more candidates and draws per waypoint
+        harder = opts.model_copy(update={
+            "candidates": 4 * opts.candidates, "preheat_retries": 4 * opts.preheat_retries,
+        })
+        more, ok_more, rep = preheat(layout, problem, harder, rng, 2 * pop_n, need=pop_n)
+        report.merge(rep)
+        grown, ok = np.vstack([grown, more]), np.concatenate([ok, ok_more])
     grown = grown[ok]
     levels, fresh = grown[:pop_n], grown[pop_n:]
     if levels.shape[0] < pop_n:

@@ -79,6 +79,11 @@ class IGAOptions(BaseModel):
     elitism: bool = Field(True, description="False = EG4: no elite group")
 
     smoothing: bool = Field(True, description="add a B-spline smoothed path to the plan")
+    clearance_fallback: bool = Field(
+        True,
+        description="when no plan keeps eq. 7's full margin, retry with R_c = 0 and then with "
+        "half the hull length (the plan carries a warning)",
+    )
 
     @model_validator(mode="after")
     def _weights_not_all_zero(self) -> IGAOptions:

@@ -32,14 +32,40 @@ def plan_scenario(
     if seed is not None:
         overrides["seed"] = seed
     opts = scenario.planner_options(**overrides)
-    problem = Problem.from_scenario(scenario)
-    try:
-        result = run_iga(problem, opts)
-    except InfeasibleProblem as exc:
-        raise NoFeasiblePlan(f"no feasible plan: {exc}") from None
-    if not result.feasible:
-        raise NoFeasiblePlan(f"no feasible plan: {explain_infeasible(problem, result)}")
-    return build_plan(scenario, problem, opts, result)
+    first: tuple[Problem, IGAResult] | None = None
+    for margin, warning in clearance_margins(scenario, opts.clearance_fallback):
+        problem = Problem.from_scenario(scenario, margin)
+        try:
+            result = run_iga(problem, opts)
+        except InfeasibleProblem as exc:
+            raise NoFeasiblePlan(f"no feasible plan: {exc}") from None
+        if result.feasible:
+            plan = build_plan(scenario, problem, opts, result)
+            plan["metrics"]["inflation_m"] = _r(margin)
+            plan["warnings"] = [warning] if warning else []
+            return plan
+        first = first or (problem, result)
+    assert first is not None
+    raise NoFeasiblePlan(f"no feasible plan: {explain_infeasible(*first)}")
+
+
+def clearance_margins(scenario: Scenario, fallback: bool) -> list[tuple[float, str | None]]:
+    """Obstacle margins to try: eq. 7's D_USV + R_c, then R_c = 0, then half the hull.
+
+    Half the hull length is the least margin a valid plan may keep; a plan
+    made with less than eq. 7's margin says so in its warnings.
+    """
+    v = scenario.vessel
+    full = v.length + v.compensation_radius
+    levels: list[tuple[float, str | None]] = [(full, None)]
+    if fallback:
+        for margin, what in ((v.length, "R_c = 0"), (v.length / 2.0, "half the hull length")):
+            if margin < levels[-1][0]:
+                levels.append((margin, (
+                    f"reduced clearance: no plan keeps eq. 7's margin of {full:g} m "
+                    f"(D_USV + R_c); planned with {margin:g} m ({what})"
+                )))
+    return levels
 
 
 def build_plan(
@@ -94,7 +120,10 @@ def build_plan(
         },
     }
     if opts.smoothing:
-        plan["smoothed"] = smooth_path(xs, ys, t, field)
+        margin = float(problem.obstacles.inflated[0] - problem.obstacles.radius[0]) \
+            if problem.obstacles.count else 0.0
+        used = ObstacleField(field.centre, field.velocity, field.radius, field.radius + margin)
+        plan["smoothed"] = smooth_path(xs, ys, t, used)
     return plan
 
 
@@ -113,6 +142,14 @@ def scenario_field(scenario: Scenario) -> ObstacleField:
 
 def explain_infeasible(problem: Problem, result: IGAResult) -> str:
     """Why no plan was found: an enclosed goal, or where candidate paths were blocked."""
+    blocked = approach_blockers(problem, result)
+    if blocked:
+        names = ", ".join(f"obstacles[{i}]" for i in blocked)
+        return (
+            f"the run-in along the ramp axis is blocked: {names} (inflated by eq. 7) "
+            f"cross every arrival within {math.degrees(math.atan(result.layout.cone_tan)):g} deg "
+            "of the axis"
+        )
     enclosed = enclosing_obstacles(problem)
     if enclosed is not None:
         names = ", ".join(f"obstacles[{i}]" for i in enclosed)
@@ -134,6 +171,29 @@ def explain_infeasible(problem: Problem, result: IGAResult) -> str:
         top = [int(i) for i in top if report.obstacle_hits[i] > 0]
         parts.append("mostly by " + ", ".join(f"obstacles[{i}]" for i in top))
     return "; ".join(parts)
+
+
+def approach_blockers(problem: Problem, result: IGAResult) -> list[int]:
+    """Static obstacles that cut every straight arrival inside the ramp-axis cone."""
+    lay = result.layout
+    f = problem.obstacles
+    if lay.cone_tan is None or f.count == 0:
+        return []
+    # sample arrivals from every admissible last waypoint (x, y) of the cone to the goal
+    xs = lay.x_of(np.arange(lay.x_count[-1]), lay.n_mid - 1)
+    m = lay.cone_m
+    ends = [(x, j * lay.y_res) for x, mm in zip(xs, m, strict=True) for j in range(-mm, mm + 1)]
+    static = np.flatnonzero(f.static)
+    blockers: set[int] = set()
+    for x, y in ends:
+        s = np.linspace(0.0, 1.0, 50)
+        px, py = x * (1 - s), y * (1 - s)
+        d = np.hypot(px[:, None] - f.centre[static, 0], py[:, None] - f.centre[static, 1])
+        hit = (d < f.inflated[static]).any(axis=0)
+        if not hit.any():
+            return []
+        blockers.update(int(i) for i in static[hit])
+    return sorted(blockers)
 
 
 def enclosing_obstacles(problem: Problem, cell: float = 0.5) -> list[int] | None:

@@ -13,7 +13,8 @@ keeps one admissible point per individual.
 
 Candidates head for an aim point within a random bearing spread of +-55
 degrees, narrowed over the last waypoints so the path can still turn onto
-the goal. A transit aims at the goal. A recovery aims at a point on the ramp
+the goal; a second draw for a blocked waypoint spreads over every bearing
+the turn limit admits (up to 80 degrees off the x step). A transit aims at the goal. A recovery aims at a point on the ramp
 axis that each individual draws between the run-in and the start, and
 follows the axis from there: the population holds paths that join the axis
 early (small malposition, Fit_mal) and late (short, Fit_d). Half of the
@@ -133,17 +134,22 @@ class _Grower:
         )
         for k in range(lay.n_mid):
             pending = np.flatnonzero(alive)
-            for _ in range(self.opts.preheat_retries):
+            for attempt in range(self.opts.preheat_retries):
                 if pending.size == 0:
                     break
-                pending = pending[~self._draw(k, walk, pending, levels)]
+                pending = pending[~self._draw(k, walk, pending, levels, wide=attempt > 0)]
             if pending.size:
                 alive[pending] = False
                 self.report.blocked_at[k] = self.report.blocked_at.get(k, 0) + int(pending.size)
         return levels, alive
 
-    def _draw(self, k: int, walk: _Walk, idx: np.ndarray, levels: np.ndarray) -> np.ndarray:
-        """One draw of candidates for waypoint k of individuals `idx`; True where placed."""
+    def _draw(
+        self, k: int, walk: _Walk, idx: np.ndarray, levels: np.ndarray, wide: bool = False
+    ) -> np.ndarray:
+        """One draw of candidates for waypoint k of individuals `idx`; True where placed.
+
+        `wide` draws bearings uniformly over the whole admissible window.
+        """
         lay, prob, rng = self.layout, self.problem, self.rng
         n, c = idx.size, self.opts.candidates
         px, py, pt, pv = (a[idx, None] for a in (walk.x, walk.y, walk.t, walk.v))
@@ -156,12 +162,15 @@ class _Grower:
         ax, ay = self._aim(k, px, walk.join_x[idx, None])
         taper = min(1.0, max(0.2, (lay.n_mid - 1 - k) / 3.0))
         offset = rng.uniform(-1.0, 1.0, size=(n, c))
-        slope = np.arctan2(ay - py, px - ax) + (taper * _SPREAD) * offset
         if k == 0:
             lo, hi = -_MAX_SLOPE, _MAX_SLOPE
         else:
             lo = np.maximum(slope0 - prob.turn_max, -_MAX_SLOPE)
             hi = np.minimum(slope0 + prob.turn_max, _MAX_SLOPE)
+        if wide:
+            slope = lo + (hi - lo) * (offset + 1.0) / 2.0
+        else:
+            slope = np.arctan2(ay - py, px - ax) + (taper * _SPREAD) * offset
         y = py + dx * np.tan(np.clip(slope, lo, hi))
         if last and lay.cone_tan is not None:
             m = lay.cone_half_levels(xl)

@@ -36,7 +36,12 @@ class Problem:
     offset: tuple[float, float] = (0.0, 0.0)
 
     @classmethod
-    def from_scenario(cls, scenario: Scenario) -> Problem:
+    def from_scenario(cls, scenario: Scenario, margin: float | None = None) -> Problem:
+        """The scenario in the planning frame; obstacles inflated by eq. 7.
+
+        `margin` replaces eq. 7's D_USV + R_c (the clearance fallback of
+        plan_scenario); None keeps the full margin.
+        """
         sx, sy = scenario.start.x, scenario.start.y
         gx, gy = scenario.goal.x, scenario.goal.y
         recovery = scenario.kind == "recovery"
@@ -47,7 +52,10 @@ class Problem:
         velocity = np.array([[o.vx, o.vy] for o in obs], dtype=float).reshape(-1, 2)
         radius = np.array([o.radius for o in obs], dtype=float)
         v = scenario.vessel
-        inflated = inflate_radius(radius, v.length, v.compensation_radius)
+        inflated = (
+            inflate_radius(radius, v.length, v.compensation_radius)
+            if margin is None else radius + margin
+        )
         rot = _rotation(-theta)
         field = ObstacleField(
             centre=(centre - np.array(offset)) @ rot.T,

@@ -1,0 +1,110 @@
+"""Seeded random scenarios of the kinds the planner must handle (issue 2, "Done when").
+
+Recoveries: start 50-140 m out within +-45 degrees of the ramp axis, 3-9
+obstacles of radius 1-4 m spread around the direct line, about a third of
+them moving at up to 0.8 m/s, current up to 0.3 m/s. Transits: a 400 m x
+400 m area crossed corner to corner, with large islands and ships faster
+than the boat crossing the route.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from usvstation.scenario import Obstacle, Scenario, ScenarioError, Vessel, parse_scenario
+
+_ORIGIN = {"lat": 30.5135, "lon": 114.4182, "ramp_bearing_deg": 90.0}
+
+
+def random_recovery(seed: int) -> Scenario:
+    """A random recovery scenario; the same seed gives the same scenario."""
+    rng = np.random.default_rng(seed)
+    vessel = Vessel()
+    while True:
+        dist = rng.uniform(50.0, 140.0)
+        bearing = math.radians(rng.uniform(-45.0, 45.0))
+        sx, sy = dist * math.cos(bearing), dist * math.sin(bearing)
+        obstacles = []
+        for _ in range(int(rng.integers(3, 10))):
+            frac = rng.uniform(0.1, 0.9)
+            moving = rng.random() < 1.0 / 3.0
+            speed = rng.uniform(0.1, 0.8) if moving else 0.0
+            course = rng.uniform(0.0, 2.0 * math.pi)
+            obstacles.append({
+                "x": round(sx * frac + rng.normal(0.0, 4.0), 2),
+                "y": round(sy * frac + rng.normal(0.0, 10.0), 2),
+                "radius": round(rng.uniform(1.0, 4.0), 2),
+                "vx": round(speed * math.cos(course), 3),
+                "vy": round(speed * math.sin(course), 3),
+            })
+        obstacles = _clear_of(obstacles, [(sx, sy), (0.0, 0.0)], vessel)
+        heading = math.degrees(math.atan2(-sy, -sx)) + rng.uniform(-30.0, 30.0)
+        data = {
+            "name": f"random-recovery-{seed}",
+            "kind": "recovery",
+            "origin": _ORIGIN,
+            "start": {"x": round(sx, 2), "y": round(sy, 2), "heading_deg": round(heading % 360, 2),
+                      "speed": round(rng.uniform(0.5, 1.5), 2)},
+            "goal": {"x": 0.0, "y": 0.0},
+            "obstacles": obstacles,
+            "vessel": vessel.model_dump(),
+            "environment": _environment(rng),
+        }
+        try:
+            return parse_scenario(data)
+        except ScenarioError:  # pragma: no cover - _clear_of keeps start and goal free
+            continue
+
+
+def random_transit(seed: int) -> Scenario:
+    """A 400 m x 400 m transit with large islands and ships faster than the boat."""
+    rng = np.random.default_rng(seed)
+    vessel = Vessel()
+    sx, sy = rng.uniform(-190, -160), rng.uniform(-190, -160)
+    gx, gy = rng.uniform(160, 190), rng.uniform(160, 190)
+    obstacles = []
+    for _ in range(int(rng.integers(3, 7))):  # islands
+        obstacles.append({"x": round(rng.uniform(-150, 150), 1), "y": round(rng.uniform(-150, 150), 1),
+                          "radius": round(rng.uniform(15.0, 45.0), 1), "vx": 0.0, "vy": 0.0})
+    route = math.atan2(gy - sy, gx - sx)
+    length = math.hypot(gx - sx, gy - sy)
+    for _ in range(int(rng.integers(2, 4))):  # ships crossing the route
+        frac, t_cross = rng.uniform(0.2, 0.8), rng.uniform(30.0, 160.0)
+        px, py = sx + frac * length * math.cos(route), sy + frac * length * math.sin(route)
+        course = route + math.pi / 2 * rng.choice([-1.0, 1.0]) + math.radians(rng.uniform(-40, 40))
+        speed = rng.uniform(vessel.speed_max + 0.5, vessel.speed_max + 3.0)
+        vx, vy = speed * math.cos(course), speed * math.sin(course)
+        obstacles.append({"x": round(px - vx * t_cross, 1), "y": round(py - vy * t_cross, 1),
+                          "radius": round(rng.uniform(4.0, 8.0), 1),
+                          "vx": round(vx, 3), "vy": round(vy, 3)})
+    obstacles = _clear_of(obstacles, [(sx, sy), (gx, gy)], vessel)
+    data = {
+        "name": f"random-transit-{seed}",
+        "kind": "transit",
+        "origin": _ORIGIN,
+        "start": {"x": round(sx, 1), "y": round(sy, 1),
+                  "heading_deg": round(math.degrees(route) % 360, 1), "speed": 1.0},
+        "goal": {"x": round(gx, 1), "y": round(gy, 1)},
+        "obstacles": obstacles,
+        "vessel": vessel.model_dump(),
+        "environment": _environment(rng),
+    }
+    return parse_scenario(data)
+
+
+def _clear_of(obstacles: list[dict], points: list[tuple[float, float]], vessel: Vessel) -> list[dict]:
+    """Drop obstacles whose inflated circle (eq. 7) covers a point at t = 0, with a 1 m margin."""
+    pad = vessel.length + vessel.compensation_radius + 1.0
+    return [
+        o for o in obstacles
+        if all(math.hypot(o["x"] - px, o["y"] - py) > Obstacle(**o).radius + pad for px, py in points)
+    ]
+
+
+def _environment(rng: np.random.Generator) -> dict:
+    return {"current_speed": round(rng.uniform(0.0, 0.3), 3),
+            "current_dir_deg": round(rng.uniform(0.0, 360.0), 1),
+            "wind_speed": round(rng.uniform(0.0, 8.0), 1),
+            "wind_dir_deg": round(rng.uniform(0.0, 360.0), 1)}
