@@ -66,7 +66,8 @@ def random_transit(seed: int) -> Scenario:
     gx, gy = rng.uniform(160, 190), rng.uniform(160, 190)
     obstacles = []
     for _ in range(int(rng.integers(3, 7))):  # islands
-        obstacles.append({"x": round(rng.uniform(-150, 150), 1), "y": round(rng.uniform(-150, 150), 1),
+        x, y = rng.uniform(-150, 150, size=2)
+        obstacles.append({"x": round(x, 1), "y": round(y, 1),
                           "radius": round(rng.uniform(15.0, 45.0), 1), "vx": 0.0, "vy": 0.0})
     route = math.atan2(gy - sy, gx - sx)
     length = math.hypot(gx - sx, gy - sy)
@@ -94,12 +95,15 @@ def random_transit(seed: int) -> Scenario:
     return parse_scenario(data)
 
 
-def _clear_of(obstacles: list[dict], points: list[tuple[float, float]], vessel: Vessel) -> list[dict]:
+def _clear_of(
+    obstacles: list[dict], points: list[tuple[float, float]], vessel: Vessel
+) -> list[dict]:
     """Drop obstacles whose inflated circle (eq. 7) covers a point at t = 0, with a 1 m margin."""
     pad = vessel.length + vessel.compensation_radius + 1.0
     return [
         o for o in obstacles
-        if all(math.hypot(o["x"] - px, o["y"] - py) > Obstacle(**o).radius + pad for px, py in points)
+        if all(math.hypot(o["x"] - px, o["y"] - py) > Obstacle(**o).radius + pad
+               for px, py in points)
     ]
 
 

@@ -14,8 +14,9 @@ keeps one admissible point per individual.
 Candidates head for an aim point within a random bearing spread of +-55
 degrees, narrowed over the last waypoints so the path can still turn onto
 the goal; a second draw for a blocked waypoint spreads over every bearing
-the turn limit admits (up to 80 degrees off the x step). A transit aims at the goal. A recovery aims at a point on the ramp
-axis that each individual draws between the run-in and the start, and
+the turn limit admits (up to 80 degrees off the x step). A transit aims at
+the goal. A recovery aims at a point on the ramp axis that each individual
+draws between the run-in and the start, and
 follows the axis from there: the population holds paths that join the axis
 early (small malposition, Fit_mal) and late (short, Fit_d). Half of the
 individuals keep the admissible candidate closest to the aim (near-straight

@@ -6,6 +6,7 @@ other's mistakes: it reads only the stable plan format and the scenario.
 
 from __future__ import annotations
 
+import itertools
 import math
 from typing import Any
 
@@ -39,7 +40,7 @@ def plan_violations(plan: dict[str, Any], scenario: Scenario) -> list[str]:
     for i, w in enumerate(wps):
         if not v.speed_min - TOL <= w["speed"] <= v.speed_max + TOL:
             out.append(f"waypoint {i}: speed {w['speed']} outside [{v.speed_min}, {v.speed_max}]")
-    for i, (a, b) in enumerate(zip(wps, wps[1:], strict=False)):
+    for i, (a, b) in enumerate(itertools.pairwise(wps)):
         dt = b["t"] - a["t"]
         if dt <= 0.0:
             out.append(f"segment {i}: time does not increase ({a['t']} -> {b['t']})")
@@ -48,15 +49,15 @@ def plan_violations(plan: dict[str, Any], scenario: Scenario) -> list[str]:
             out.append(f"segment {i}: |dv|/dt = {abs(b['speed'] - a['speed']) / dt:.4f} m/s^2 "
                        f"above {v.accel_max}")
     headings = [
-        math.atan2(b["y"] - a["y"], b["x"] - a["x"]) for a, b in zip(wps, wps[1:], strict=False)
+        math.atan2(b["y"] - a["y"], b["x"] - a["x"]) for a, b in itertools.pairwise(wps)
     ]
-    for i, (h0, h1) in enumerate(zip(headings, headings[1:], strict=False)):
+    for i, (h0, h1) in enumerate(itertools.pairwise(headings)):
         turn = abs(math.degrees(math.remainder(h1 - h0, 2 * math.pi)))
         if turn > v.turn_max_deg + 1e-6:
             out.append(f"waypoint {i + 1}: turn {turn:.2f} deg above {v.turn_max_deg}")
     half_hull = v.length / 2.0
     for j, obs in enumerate(scenario.obstacles):
-        for i, (a, b) in enumerate(zip(wps, wps[1:], strict=False)):
+        for i, (a, b) in enumerate(itertools.pairwise(wps)):
             d = _closest_distance(a, b, obs.x, obs.y, obs.vx, obs.vy)
             if d < obs.radius + half_hull - TOL:
                 out.append(f"segment {i}: hull within {d - obs.radius:.3f} m of obstacles[{j}]")
