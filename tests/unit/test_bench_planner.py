@@ -1,0 +1,32 @@
+"""The planner benchmark runs end to end (quick mode) and reports every figure it promises."""
+
+import shutil
+
+from usvstation.bench.planner import run_planner_bench
+from usvstation.scenario import bundled_scenario_dir
+
+
+def test_quick_planner_bench(tmp_path):
+    shutil.copy(bundled_scenario_dir() / "case3.json", tmp_path / "case3.json")
+    messages = []
+    out = run_planner_bench(folder=tmp_path, seeds=2, random_count=2, quick=True,
+                            progress=messages.append)
+    assert messages and messages[0] == "planning case3 with 2 seeds"
+    (row,) = out["scenarios"]
+    assert row["scenario"] == "case3" and row["valid"] == 2 and len(row["plan_time_ms"]) == 2
+    assert row["plan_time_ms_median"] > 0
+    for key in ("fit_d", "fit_t", "fit_ang", "fit_mal", "length_m", "duration_s",
+                "min_clearance_m", "generations"):
+        assert row[key] is not None
+    ab = out["ablation"]
+    assert [r["case"] for r in ab["table2"]] == ["case3"]
+    assert {"fit_ang_iga", "fit_ang_eg3", "fit_mal_iga", "fit_mal_eg3"} <= ab["table2"][0].keys()
+    assert {"time_iga_s", "time_eg2_s", "time_eg4_s"} <= ab["table3"][0].keys()
+    assert {"elite_initial_iga", "elite_initial_eg1"} <= ab["eg1_preheating"][0].keys()
+    runs = out["baseline"]["runs"]
+    assert {r["deap_init"] for r in runs} == {"random", "preheated"}
+    for r in runs:
+        assert r["deap_fitness"] <= r["iga_fitness"] or r["deap_reached_iga_fitness"]
+        assert r["time_ratio"] > 0
+    assert out["random"]["recovery"]["count"] == 2 and out["random"]["transit"]["count"] == 2
+    assert out["machine"]["cores"] >= 1
