@@ -75,6 +75,8 @@ def build_parser() -> argparse.ArgumentParser:
                        help="random scenarios for the validity rate (default 100, 0 to skip)")
     bench.add_argument("--quick", action="store_true",
                        help="fewer repetitions, for a smoke test (figures not for the record)")
+    bench.add_argument("--markdown", type=Path, metavar="JSON",
+                       help="print the tables for RESULTS.md from a saved --json result")
     return parser
 
 
@@ -148,8 +150,14 @@ def format_plan(plan: dict[str, Any]) -> str:
 
 
 def _cmd_bench(args: argparse.Namespace) -> int:
-    from usvstation.bench.planner import run_planner_bench
+    from usvstation.bench.planner import render_markdown, run_planner_bench
 
+    if args.markdown:
+        try:
+            print(render_markdown(json.loads(args.markdown.read_text(encoding="utf-8"))), end="")
+        except (OSError, ValueError, KeyError) as exc:
+            raise CliError(f"cannot render {args.markdown}: {exc}", EXIT_INVALID) from None
+        return EXIT_OK
     try:
         result = run_planner_bench(
             folder=args.scenarios, seeds=args.seeds, random_count=args.random, quick=args.quick,

@@ -242,3 +242,78 @@ def bench_random(recoveries: int, transits: int) -> dict[str, Any]:
             "failures": failures,
         }
     return out
+
+
+def render_markdown(r: dict[str, Any]) -> str:
+    """The benchmark's figures as the tables of benchmarks/RESULTS.md."""
+    m = r["machine"]
+    lines = [
+        f"Command: `{r['command']}`; machine: {m['cpu']}, {m['cores']} cores, Python "
+        f"{m['python']}, NumPy {m['numpy']}; date {m['date']}.",
+        "",
+        "| scenario | median plan time (ms) | all seeds (ms) | valid | fitness | Fit_d | Fit_T (s) "
+        "| Fit_ang | Fit_mal (m) | length (m) | duration (s) | clearance (m) | generations |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|",
+    ]
+    for s in r["scenarios"]:
+        lines.append(
+            f"| {s['scenario']} | {s['plan_time_ms_median']} | "
+            f"{', '.join(f'{t:.0f}' for t in s['plan_time_ms'])} | {s['valid']}/{s['seeds']} | "
+            f"{s['fitness']} | {s['fit_d']} | {s['fit_t']} | {s['fit_ang']} | {s['fit_mal']} | "
+            f"{s['length_m']} | {s['duration_s']} | {s['min_clearance_m']} | {s['generations']} |"
+        )
+    ab = r["ablation"]
+    lines += ["", f"Ablations (means over seeds {ab['seeds']}). Table 2 form (IGA vs EG3):", "",
+              "| case | Fit_ang IGA | Fit_ang EG3 | Fit_mal IGA | Fit_mal EG3 | EG3 valid |",
+              "|---|---|---|---|---|---|"]
+    for t in ab["table2"]:
+        lines.append(f"| {t['case']} | {t['fit_ang_iga']} | {t['fit_ang_eg3']} | "
+                     f"{t['fit_mal_iga']} | {t['fit_mal_eg3']} | {t['valid_eg3']} |")
+    lines += ["", "Table 3 form (time, s; `to 98 %`: until 98 % of the IGA's fitness, "
+              "stall rule off, reached/runs):", "",
+              "| case | IGA | EG2 | EG4 | gens IGA | gens EG2 | gens EG4 | to 98 % IGA | "
+              "to 98 % EG2 | to 98 % EG4 |", "|---|---|---|---|---|---|---|---|---|---|"]
+    n = len(ab["seeds"])
+    for t in ab["table3"]:
+        lines.append(
+            f"| {t['case']} | {t['time_iga_s']} | {t['time_eg2_s']} | {t['time_eg4_s']} | "
+            f"{t['generations_iga']} | {t['generations_eg2']} | {t['generations_eg4']} | "
+            f"{t['to_target_time_iga_s']} ({t['to_target_reached_iga']}/{n}) | "
+            f"{t['to_target_time_eg2_s']} ({t['to_target_reached_eg2']}/{n}) | "
+            f"{t['to_target_time_eg4_s']} ({t['to_target_reached_eg4']}/{n}) |")
+    lines += ["", "Table 4 form:", "",
+              "| case | Fit_ang IGA/EG2/EG4 | Fit_mal IGA/EG2/EG4 | Fit_d IGA/EG2/EG4 | "
+              "Fit_T IGA/EG2/EG4 |", "|---|---|---|---|---|"]
+    for t in ab["table4"]:
+        cells = [" / ".join(str(t[f"{term}_{v}"]) for v in ("iga", "eg2", "eg4"))
+                 for term in ("fit_ang", "fit_mal", "fit_d", "fit_t")]
+        lines.append(f"| {t['case']} | " + " | ".join(cells) + " |")
+    lines += ["", "EG1 (no preheating), elite-group mean fitness as in Fig. 15:", "",
+              "| case | initial IGA | initial EG1 | gen 20 IGA | gen 20 EG1 | final IGA | "
+              "final EG1 | gens IGA | gens EG1 | time IGA (s) | time EG1 (s) |",
+              "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for t in ab["eg1_preheating"]:
+        lines.append(
+            f"| {t['case']} | {t['elite_initial_iga']} | {t['elite_initial_eg1']} | "
+            f"{t['elite_gen20_iga']} | {t['elite_gen20_eg1']} | {t['fitness_iga']} | "
+            f"{t['fitness_eg1']} | {t['generations_iga']} | {t['generations_eg1']} | "
+            f"{t['time_iga_s']} | {t['time_eg1_s']} |")
+    b = r["baseline"]
+    lines += ["", f"General GA library baseline ({b['library']}, same encoding and fitness, "
+              f"until the IGA's fitness or {b['max_generations']} generations):", "",
+              "| scenario | seed | DEAP init | IGA time (s) | DEAP time (s) | time ratio | "
+              "IGA fitness | DEAP fitness | fitness ratio | DEAP gens |",
+              "|---|---|---|---|---|---|---|---|---|---|"]
+    for x in b["runs"]:
+        lines.append(
+            f"| {x['scenario']} | {x['seed']} | {x['deap_init']} | {x['iga_time_s']} | "
+            f"{x['deap_time_s']} | {x['time_ratio']} | {x['iga_fitness']} | {x['deap_fitness']} | "
+            f"{x['fitness_ratio']} | {x['deap_generations']} |")
+    if "random" in r:
+        lines += ["", "Random scenarios, seed 1 (bench/scenarios.py):", "",
+                  "| kind | valid | median plan time (ms) | p90 (ms) | failures |",
+                  "|---|---|---|---|---|"]
+        for kind, x in r["random"].items():
+            lines.append(f"| {kind} | {x['valid']}/{x['count']} | {x['plan_time_ms_median']} | "
+                         f"{x['plan_time_ms_p90']} | {', '.join(x['failures']) or '-'} |")
+    return "\n".join(lines) + "\n"

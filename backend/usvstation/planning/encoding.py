@@ -227,7 +227,7 @@ class GeneLayout:
             m = self.cone_half_levels(mid[:, -1, 0])
             ym[:, -1] = (mid[:, -1, 1] - m) * self.y_res
         n = self.n_waypoints
-        x, y, v = np.empty((p, n)), np.empty((p, n)), np.empty((p, n))
+        x, y, v = (np.empty((p, n), order="F") for _ in range(3))
         x[:, 0], y[:, 0], v[:, 0] = self.start[0], self.start[1], self.start_speed
         x[:, -1], y[:, -1], v[:, -1] = self.goal[0], self.goal[1], self.v_of(levels[:, -1])
         x[:, 1:-1], y[:, 1:-1], v[:, 1:-1] = xm, ym, self.v_of(mid[:, :, 2])

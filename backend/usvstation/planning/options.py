@@ -20,7 +20,7 @@ class IGAOptions(BaseModel):
     seed: int = Field(1, ge=0, description="random seed; the same seed gives the same plan")
 
     # population and genetic operators
-    population: int = Field(80, ge=4, le=5000)
+    population: int = Field(60, ge=4, le=5000)
     elite_fraction: float = Field(0.1, ge=0.0, le=0.5, description="share kept as elite group")
     tournament_size: int = Field(3, ge=2, le=16)
     crossover_rate: float = Field(0.9, ge=0.0, le=1.0)
@@ -36,7 +36,7 @@ class IGAOptions(BaseModel):
     stall_generations: int = Field(
         10, ge=1, description="converged when the best fitness stalls this many generations"
     )
-    stall_tolerance: float = Field(2e-3, ge=0.0, description="relative gain counted as progress")
+    stall_tolerance: float = Field(3e-3, ge=0.0, description="relative gain counted as progress")
 
     # encoding (eq. 10-11): widths grow to cover the scenario
     d_sl: float = Field(8.0, gt=0.0, description="nominal waypoint interval D_SL along x, m")
