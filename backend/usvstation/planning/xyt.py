@@ -161,10 +161,17 @@ def segments_hit_circles(
 def closest_approach(
     x0: Num, y0: Num, t0: Num, x1: Num, y1: Num, t1: Num, cx: Num, cy: Num, vx: Num, vy: Num
 ) -> np.ndarray:
-    """Smallest centre-to-centre distance over the segment's time window (broadcast)."""
+    """Smallest centre-to-centre distance over the segment's time window (broadcast).
+
+    Evaluates the relative position at the closest instant (normalised time
+    s* in [0, 1]) rather than the quadratic's value, which would lose
+    precision to cancellation.
+    """
     dt = t1 - t0
-    a, b, c0 = eq9_coefficients(x0, y0, t0, x1, y1, t1, cx, cy, vx, vy, 0.0)
+    ex, ey = x0 - cx - vx * t0, y0 - cy - vy * t0
+    dx, dy = (x1 - x0) - vx * dt, (y1 - y0) - vy * dt
+    dd = np.asarray(dx * dx + dy * dy, dtype=float)
     with np.errstate(divide="ignore", invalid="ignore"):
-        tau = np.where(a > 0.0, -b / (2.0 * a), 0.0)
-    tau = np.clip(tau, 0.0, np.maximum(dt, 0.0))
-    return np.sqrt(np.maximum((a * tau + b) * tau + c0, 0.0))
+        s = np.where(dd > 0.0, -(ex * dx + ey * dy) / dd, 0.0)
+    s = np.clip(s, 0.0, 1.0)
+    return np.hypot(ex + s * dx, ey + s * dy)
