@@ -45,10 +45,10 @@ def smooth_path(x: np.ndarray, y: np.ndarray, t: np.ndarray, field: ObstacleFiel
         result = {
             "degree": int(curve.k),
             "collision_free": bool(free),
-            "min_clearance_m": clearance,
+            "min_clearance_m": None if clearance is None else round(clearance, 6),
             "points": [
-                {"x": float(a), "y": float(b), "t": float(c), "speed": float(s),
-                 "heading_deg": float(h)}
+                {"x": round(float(a), 6), "y": round(float(b), 6), "t": round(float(c), 6),
+                 "speed": round(float(s), 6), "heading_deg": round(float(h), 6)}
                 for (a, b, c), s, h in zip(pts, speed, heading, strict=True)
             ],
         }
