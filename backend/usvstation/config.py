@@ -1,0 +1,82 @@
+"""Station settings from flags and environment variables (USV_STATION_*), and the access token."""
+
+from __future__ import annotations
+
+import ipaddress
+import os
+import secrets
+import socket
+from pathlib import Path
+
+from pydantic import Field
+from pydantic_settings import BaseSettings, SettingsConfigDict
+
+MIN_TOKEN_LENGTH = 16
+
+
+class Settings(BaseSettings):
+    """Everything `usv-station serve` needs; flags override USV_STATION_* variables."""
+
+    model_config = SettingsConfigDict(env_prefix="USV_STATION_", extra="forbid")
+
+    host: str = "127.0.0.1"
+    port: int = Field(8000, ge=0, le=65535)
+    link: str = Field("sim", description="'sim', a serial device or a pyserial URL")
+    baud: int = Field(57600, gt=0)
+    data_dir: Path = Path("data")
+    token: str | None = Field(None, description="bearer token; default: generated in data_dir")
+    viser_port: int = Field(8080, ge=0, le=65535)
+    sim_speed: float = Field(1.0, gt=0.0, le=100.0)
+    cors_origins: list[str] = Field(default_factory=list)
+    plan_workers: int = Field(2, ge=1, le=32)
+    heartbeat_timeout_s: float = Field(3.0, gt=0.0)
+    telemetry_hz: float = Field(5.0, gt=0.0, le=50.0)
+
+
+class ExposureError(ValueError):
+    """The settings would expose boat control without authentication."""
+
+
+def is_loopback(host: str) -> bool:
+    """True for addresses that only this machine can reach."""
+    if host in ("localhost", ""):
+        return host == "localhost"
+    try:
+        return ipaddress.ip_address(host).is_loopback
+    except ValueError:
+        try:
+            return all(ipaddress.ip_address(a[4][0]).is_loopback
+                       for a in socket.getaddrinfo(host, None))
+        except (OSError, ValueError):
+            return False
+
+
+def resolve_token(settings: Settings) -> str:
+    """The bearer token: --token / USV_STATION_TOKEN, else the one generated in data_dir.
+
+    An empty token turns authentication off, which is refused unless the
+    station binds to a loopback address only.
+    """
+    token = settings.token
+    if token is None:
+        path = settings.data_dir / "token"
+        if path.exists():
+            token = path.read_text(encoding="utf-8").strip()
+        else:
+            token = secrets.token_urlsafe(24)
+            settings.data_dir.mkdir(parents=True, exist_ok=True)
+            fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
+            with os.fdopen(fd, "w", encoding="utf-8") as f:
+                f.write(token + "\n")
+    if not is_loopback(settings.host):
+        if not token:
+            raise ExposureError(
+                f"refusing to bind {settings.host} without a token: set --token "
+                "(or USV_STATION_TOKEN) or bind to 127.0.0.1"
+            )
+        if len(token) < MIN_TOKEN_LENGTH:
+            raise ExposureError(
+                f"refusing to bind {settings.host} with a token of {len(token)} characters: "
+                f"use at least {MIN_TOKEN_LENGTH}"
+            )
+    return token

@@ -1,0 +1,1 @@
+"""Station services: plan jobs, live fan-out, missions, telemetry ingest."""

@@ -1,0 +1,57 @@
+"""The station: one object that owns the store, the live hub, plan jobs and the boat link."""
+
+from __future__ import annotations
+
+import asyncio
+import json
+from typing import Any
+
+from usvstation.config import Settings, resolve_token
+from usvstation.scenario import Scenario, bundled_scenario_dir, parse_scenario
+from usvstation.services.hub import LiveHub
+from usvstation.services.plans import PlanService
+from usvstation.store.db import Store
+
+DEFAULT_SCENARIO = "case1"
+
+
+class Station:
+    """Composition root; `start` and `stop` run inside the server's lifespan."""
+
+    def __init__(self, settings: Settings) -> None:
+        self.settings = settings
+        self.token = resolve_token(settings)
+        self.store = Store(settings.data_dir)
+        self.hub = LiveHub()
+        self.plans = PlanService(self.store, self.hub, settings.plan_workers)
+
+    async def start(self) -> None:
+        self.store.start()
+        await self.plans.start()
+
+    async def stop(self) -> None:
+        await self.plans.stop()
+        await asyncio.to_thread(self.store.close)
+
+    async def working_scenario(self) -> Scenario:
+        data = await asyncio.to_thread(self.store.get_setting, "scenario")
+        if data is None:
+            path = bundled_scenario_dir() / f"{DEFAULT_SCENARIO}.json"
+            data = json.loads(path.read_text(encoding="utf-8"))
+        return parse_scenario(data)
+
+    async def set_working_scenario(self, scenario: Scenario) -> None:
+        await asyncio.to_thread(self.store.set_setting, "scenario",
+                                scenario.model_dump(mode="json"))
+        self.hub.publish("scenario", {"name": scenario.name})
+
+    def health(self) -> dict[str, Any]:
+        w = self.store.writer
+        return {
+            "status": "ok" if w.error is None else "degraded",
+            "telemetry_writer": {"received": w.stats.received, "committed": w.stats.committed,
+                                 "error": None if w.error is None else repr(w.error)},
+            "plans": {s: sum(1 for j in self.plans.jobs.values() if j["status"] == s)
+                      for s in ("queued", "running")},
+            "websocket_clients": len(self.hub.subscribers),
+        }

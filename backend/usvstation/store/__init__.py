@@ -1,0 +1,1 @@
+"""SQLite storage of telemetry, runs, plans and missions."""

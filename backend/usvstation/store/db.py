@@ -1,0 +1,306 @@
+"""SQLite storage: telemetry (batched, WAL), runs, plans and missions.
+
+One writer thread owns the write connection and commits at most
+`commit_interval_s` (200 ms) after a row arrives, so a crash loses at most
+that much telemetry; WAL keeps committed rows through a kill -9. Readers use
+their own connections from worker threads, so the event loop never blocks
+on the database.
+"""
+
+from __future__ import annotations
+
+import json
+import queue
+import sqlite3
+import threading
+import time
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+SCHEMA = """
+CREATE TABLE IF NOT EXISTS runs (
+    id INTEGER PRIMARY KEY,
+    mission_id TEXT,
+    plan_id TEXT,
+    started_at TEXT NOT NULL,
+    ended_at TEXT,
+    state TEXT NOT NULL DEFAULT 'active'
+);
+CREATE TABLE IF NOT EXISTS telemetry (
+    id INTEGER PRIMARY KEY,
+    run INTEGER REFERENCES runs(id),
+    time TEXT NOT NULL,
+    boat_time REAL,
+    lat REAL, lon REAL, x REAL, y REAL,
+    heading_deg REAL, course_deg REAL, speed REAL, ramp_heading_deg REAL,
+    yaw_rate_dps REAL, fix_type INTEGER, satellites INTEGER, hdop REAL,
+    thrust_left REAL, thrust_right REAL, battery_v REAL,
+    waypoint_index INTEGER, cross_track_m REAL, mode TEXT
+);
+CREATE INDEX IF NOT EXISTS telemetry_run ON telemetry(run, id);
+CREATE INDEX IF NOT EXISTS telemetry_time ON telemetry(time);
+CREATE TABLE IF NOT EXISTS plans (
+    id TEXT PRIMARY KEY,
+    created_at TEXT NOT NULL,
+    status TEXT NOT NULL,
+    planner TEXT NOT NULL,
+    seed INTEGER,
+    scenario TEXT NOT NULL,
+    plan TEXT,
+    error TEXT
+);
+CREATE TABLE IF NOT EXISTS missions (
+    id TEXT PRIMARY KEY,
+    plan_id TEXT NOT NULL REFERENCES plans(id),
+    created_at TEXT NOT NULL,
+    state TEXT NOT NULL,
+    sent INTEGER NOT NULL DEFAULT 0,
+    acked INTEGER NOT NULL DEFAULT 0,
+    total INTEGER NOT NULL,
+    error TEXT,
+    items TEXT NOT NULL
+);
+CREATE TABLE IF NOT EXISTS settings (
+    key TEXT PRIMARY KEY,
+    value TEXT NOT NULL
+);
+"""
+
+TELEMETRY_COLUMNS = (
+    "run", "time", "boat_time", "lat", "lon", "x", "y", "heading_deg", "course_deg", "speed",
+    "ramp_heading_deg", "yaw_rate_dps", "fix_type", "satellites", "hdop", "thrust_left",
+    "thrust_right", "battery_v", "waypoint_index", "cross_track_m", "mode",
+)
+_INSERT = (
+    f"INSERT INTO telemetry ({', '.join(TELEMETRY_COLUMNS)}) "
+    f"VALUES ({', '.join('?' for _ in TELEMETRY_COLUMNS)})"
+)
+
+
+def utc_now() -> str:
+    """ISO 8601 UTC with milliseconds, e.g. 2026-11-22T12:00:00.123Z."""
+    t = time.time()
+    return time.strftime("%Y-%m-%dT%H:%M:%S", time.gmtime(t)) + f".{int(t * 1000) % 1000:03d}Z"
+
+
+def connect(path: Path) -> sqlite3.Connection:
+    conn = sqlite3.connect(path, check_same_thread=False, timeout=30.0)
+    conn.row_factory = sqlite3.Row
+    conn.execute("PRAGMA journal_mode=WAL")
+    conn.execute("PRAGMA synchronous=NORMAL")
+    conn.execute("PRAGMA foreign_keys=ON")
+    return conn
+
+
+@dataclass
+class WriterStats:
+    received: int = 0
+    committed: int = 0
+    commits: int = 0
+
+
+class TelemetryWriter:
+    """Background thread that batches telemetry rows into transactions."""
+
+    def __init__(self, path: Path, commit_interval_s: float = 0.2, batch_max: int = 2000) -> None:
+        self.path, self.interval, self.batch_max = path, commit_interval_s, batch_max
+        self._queue: queue.SimpleQueue[tuple | None] = queue.SimpleQueue()
+        self._thread = threading.Thread(target=self._run, name="telemetry-writer", daemon=True)
+        self._flushed = threading.Event()
+        self.stats = WriterStats()
+        self.error: BaseException | None = None
+
+    def start(self) -> None:
+        self._thread.start()
+
+    def put(self, row: dict[str, Any]) -> None:
+        """Queue one telemetry row (keys of TELEMETRY_COLUMNS); never blocks."""
+        self.stats.received += 1
+        self._queue.put(tuple(row.get(c) for c in TELEMETRY_COLUMNS))
+
+    def close(self, timeout: float = 5.0) -> None:
+        """Commit what is queued and stop the thread."""
+        if self._thread.is_alive():
+            self._queue.put(None)
+            self._thread.join(timeout)
+
+    def _run(self) -> None:
+        conn = connect(self.path)
+        pending: list[tuple] = []
+        deadline = None
+        try:
+            while True:
+                wait = None if deadline is None else max(0.0, deadline - time.monotonic())
+                try:
+                    item = self._queue.get(timeout=wait)
+                except queue.Empty:
+                    item = ()
+                if item is None:
+                    self._commit(conn, pending)
+                    return
+                if item:
+                    pending.append(item)
+                    if deadline is None:
+                        deadline = time.monotonic() + self.interval
+                if pending and (time.monotonic() >= deadline or len(pending) >= self.batch_max):
+                    self._commit(conn, pending)
+                    pending, deadline = [], None
+        except BaseException as exc:  # keep the reason for /api/health
+            self.error = exc
+            raise
+        finally:
+            conn.close()
+
+    def _commit(self, conn: sqlite3.Connection, rows: list[tuple]) -> None:
+        if not rows:
+            return
+        with conn:
+            conn.executemany(_INSERT, rows)
+        self.stats.committed += len(rows)
+        self.stats.commits += 1
+
+
+class Store:
+    """The station's database: schema, writer, and read helpers (call from worker threads)."""
+
+    def __init__(self, data_dir: Path) -> None:
+        data_dir.mkdir(parents=True, exist_ok=True)
+        self.path = data_dir / "station.sqlite3"
+        self._local = threading.local()
+        with connect(self.path) as conn:
+            conn.executescript(SCHEMA)
+        self.writer = TelemetryWriter(self.path)
+
+    def start(self) -> None:
+        self.writer.start()
+
+    def close(self) -> None:
+        self.writer.close()
+
+    @property
+    def conn(self) -> sqlite3.Connection:
+        """This thread's own connection."""
+        conn = getattr(self._local, "conn", None)
+        if conn is None:
+            conn = self._local.conn = connect(self.path)
+        return conn
+
+    # --- runs --------------------------------------------------------------
+    def open_run(self, mission_id: str | None, plan_id: str | None) -> int:
+        with self.conn as c:
+            cur = c.execute(
+                "INSERT INTO runs (mission_id, plan_id, started_at) VALUES (?, ?, ?)",
+                (mission_id, plan_id, utc_now()),
+            )
+            return int(cur.lastrowid)
+
+    def close_run(self, run: int, state: str) -> None:
+        with self.conn as c:
+            c.execute("UPDATE runs SET ended_at = ?, state = ? WHERE id = ?",
+                      (utc_now(), state, run))
+
+    def runs(self) -> list[dict[str, Any]]:
+        rows = self.conn.execute(
+            "SELECT r.*, (SELECT COUNT(*) FROM telemetry t WHERE t.run = r.id) AS points "
+            "FROM runs r ORDER BY r.id"
+        ).fetchall()
+        return [dict(r) for r in rows]
+
+    def run(self, run: int) -> dict[str, Any] | None:
+        row = self.conn.execute("SELECT * FROM runs WHERE id = ?", (run,)).fetchone()
+        return dict(row) if row else None
+
+    # --- telemetry ---------------------------------------------------------
+    def telemetry(self, run: int | None, since: str | None, until: str | None,
+                  limit: int) -> list[dict[str, Any]]:
+        sql, args = self._telemetry_query(run, since, until)
+        rows = self.conn.execute(sql + " LIMIT ?", (*args, limit)).fetchall()
+        return [dict(r) for r in rows]
+
+    def iter_telemetry(self, run: int | None, since: str | None = None,
+                       until: str | None = None, chunk: int = 2000) -> Iterator[list[dict]]:
+        """Telemetry in chunks, on a connection of its own (for streamed exports)."""
+        conn = connect(self.path)
+        try:
+            sql, args = self._telemetry_query(run, since, until)
+            cur = conn.execute(sql, args)
+            while rows := cur.fetchmany(chunk):
+                yield [dict(r) for r in rows]
+        finally:
+            conn.close()
+
+    @staticmethod
+    def _telemetry_query(run: int | None, since: str | None,
+                         until: str | None) -> tuple[str, tuple]:
+        where, args = [], []
+        if run is not None:
+            where.append("run = ?")
+            args.append(run)
+        if since is not None:
+            where.append("time >= ?")
+            args.append(since)
+        if until is not None:
+            where.append("time <= ?")
+            args.append(until)
+        cols = ", ".join(("id", *TELEMETRY_COLUMNS))
+        sql = f"SELECT {cols} FROM telemetry"
+        if where:
+            sql += " WHERE " + " AND ".join(where)
+        return sql + " ORDER BY id", tuple(args)
+
+    # --- plans ---------------------------------------------------------------
+    def save_plan(self, job: dict[str, Any]) -> None:
+        with self.conn as c:
+            c.execute(
+                "INSERT OR REPLACE INTO plans (id, created_at, status, planner, seed, scenario, "
+                "plan, error) VALUES (?, ?, ?, ?, ?, ?, ?, ?)",
+                (job["id"], job["created_at"], job["status"], job["planner"], job.get("seed"),
+                 json.dumps(job["scenario"]),
+                 json.dumps(job["plan"]) if job.get("plan") is not None else None,
+                 job.get("error")),
+            )
+
+    def plans(self) -> list[dict[str, Any]]:
+        rows = self.conn.execute("SELECT * FROM plans ORDER BY created_at").fetchall()
+        return [_plan_row(r) for r in rows]
+
+    # --- missions ------------------------------------------------------------
+    def save_mission(self, m: dict[str, Any]) -> None:
+        with self.conn as c:
+            c.execute(
+                "INSERT OR REPLACE INTO missions (id, plan_id, created_at, state, sent, acked, "
+                "total, error, items) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                (m["id"], m["plan_id"], m["created_at"], m["state"], m["progress"]["sent"],
+                 m["progress"]["acked"], m["progress"]["total"], m.get("error"),
+                 json.dumps(m["items"])),
+            )
+
+    def missions(self) -> list[dict[str, Any]]:
+        rows = self.conn.execute("SELECT * FROM missions ORDER BY created_at").fetchall()
+        out = []
+        for r in rows:
+            d = dict(r)
+            d["items"] = json.loads(d["items"])
+            d["progress"] = {"sent": d.pop("sent"), "acked": d.pop("acked"),
+                             "total": d.pop("total")}
+            out.append(d)
+        return out
+
+    # --- settings --------------------------------------------------------------
+    def get_setting(self, key: str) -> Any:
+        row = self.conn.execute("SELECT value FROM settings WHERE key = ?", (key,)).fetchone()
+        return json.loads(row["value"]) if row else None
+
+    def set_setting(self, key: str, value: Any) -> None:
+        with self.conn as c:
+            c.execute("INSERT OR REPLACE INTO settings (key, value) VALUES (?, ?)",
+                      (key, json.dumps(value)))
+
+
+def _plan_row(row: sqlite3.Row) -> dict[str, Any]:
+    d = dict(row)
+    d["scenario"] = json.loads(d["scenario"])
+    d["plan"] = json.loads(d["plan"]) if d["plan"] else None
+    return d
