@@ -114,7 +114,7 @@ def create_app(station: Station) -> FastAPI:
     @app.get("/api/telemetry/export", tags=["telemetry"])
     async def export(
         run: Annotated[int | None, Query(ge=1)] = None,
-        format: Literal["csv", "gpx", "geojson", "jsonl"] = "csv",  # noqa: A002 (API name)
+        format: Literal["csv", "gpx", "geojson", "jsonl"] = "csv",
     ) -> StreamingResponse:
         run_row = await asyncio.to_thread(station.store.run, run) if run is not None else None
         if run is not None and run_row is None:
@@ -137,7 +137,7 @@ def create_app(station: Station) -> FastAPI:
             await ws.send_json({"type": "hello", "data": {"version": __version__}})
             sender = asyncio.create_task(_pump(ws, sub))
             receiver = asyncio.create_task(_drain(ws))
-            done, pending = await asyncio.wait({sender, receiver},
+            _, pending = await asyncio.wait({sender, receiver},
                                                return_when=asyncio.FIRST_COMPLETED)
             for task in pending:
                 task.cancel()
