@@ -26,7 +26,7 @@ def circle_segment_intersections(
     # Numerically stable pair of roots.
     q = -0.5 * (b + math.copysign(root, b)) if b != 0.0 else 0.5 * root
     roots = sorted({q / a, c / q} if q != 0.0 else {0.0})
-    return [s for s in roots if -1e-12 <= s <= 1.0 + 1e-12]
+    return [min(max(s, 0.0), 1.0) for s in roots if -1e-12 <= s <= 1.0 + 1e-12]
 
 
 def project_on_segment(px: float, py: float, ax: float, ay: float, bx: float, by: float) -> float:
