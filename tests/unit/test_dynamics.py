@@ -211,6 +211,17 @@ def test_current_force_of_eq2_pushes_downstream() -> None:
     assert beam[1] == pytest.approx(0.5 * 1025 * 0.25 * OTTER.lateral_area_water * 1.0)
 
 
+def test_environment_from_a_scenario_converts_degrees_at_the_edge() -> None:
+    from usvstation.scenario import load_scenario
+
+    env = Environment.from_scenario(load_scenario("case4").environment)  # 0.3 m/s to 120 deg
+    assert env.current == pytest.approx((0.3 * math.cos(math.radians(120)),
+                                         0.3 * math.sin(math.radians(120))))
+    assert env.wind == Wind(5.0, math.radians(200.0))
+    assert env.waves is None
+    assert Environment.from_scenario(load_scenario("case1").environment).calm
+
+
 def test_environment_refuses_negative_speeds() -> None:
     with pytest.raises(ValueError, match="current: speed must be >= 0"):
         Environment.with_current(-1.0, 0.0)

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -108,6 +109,20 @@ class Environment:
         if speed < 0.0:
             raise ValueError(f"current: speed must be >= 0 (got {speed})")
         return cls((speed * math.cos(direction), speed * math.sin(direction)), waves, wind)
+
+    @classmethod
+    def from_scenario(cls, environment: Any, waves: WaveField | None = None) -> Environment:
+        """From a scenario's `environment` block (current and wind; directions in degrees).
+
+        Waves are not in the scenario file; pass them explicitly (eq. 5 would
+        make 1.5 m waves from any wind, which is rarely what a scenario means).
+        """
+        wind = None
+        if environment.wind_speed > 0.0:
+            wind = Wind(environment.wind_speed, math.radians(environment.wind_dir_deg))
+        return cls.with_current(
+            environment.current_speed, math.radians(environment.current_dir_deg), waves, wind,
+        )
 
     @property
     def calm(self) -> bool:
