@@ -151,6 +151,7 @@ def test_classic_los_uses_the_isochronous_target_speed() -> None:
     guidance = LOSGuidance(PAPER, 3.0, speed_max=8.0)
     assert guidance.update(pose(0.0, 4.0), 1.0).speed == pytest.approx(2.5)
     assert guidance.update(pose(0.0, 4.0), 10.0).speed == pytest.approx(5.0)  # whatever the place
+    assert guidance.update(pose(0.0, 4.0), 30.0).speed == pytest.approx(2.5)  # late: keeps going
     with pytest.raises(ValueError, match="look-ahead radius must be > 0"):
         LOSGuidance(PAPER, 0.0)
 

@@ -146,8 +146,12 @@ class Trajectory:
         return float(self._seg[i, 0] / dt), float(self._seg[i, 1] / dt)
 
     def speed_at(self, t: float) -> float:
-        """The isochronous target speed: the desired trajectory's speed at time t."""
-        vx, vy = self.velocity_at(t)
+        """The isochronous target speed: the desired trajectory's speed at time t.
+
+        Before the start it is the first segment's, after the end the last
+        segment's (a late boat keeps going rather than stopping short).
+        """
+        vx, vy = self.velocity_at(min(max(t, self.start_time), self.end_time))
         return math.hypot(vx, vy)
 
     def extended(self, length: float) -> Trajectory:
