@@ -137,6 +137,11 @@ def test_step_refuses_a_bad_time_step(dt) -> None:
         Vessel(OTTER, VesselState(0, 0, 0)).step(ThrustCommand(0, 0), CALM, dt)
 
 
+def test_vessel_refuses_a_non_finite_start() -> None:
+    with pytest.raises(ValueError, match="initial state must be finite"):
+        Vessel(OTTER, VesselState(0.0, math.nan, 0.0))
+
+
 def test_step_refuses_non_finite_thrust() -> None:
     with pytest.raises(ValueError, match="thrust command must be finite"):
         Vessel(OTTER, VesselState(0, 0, 0)).step(ThrustCommand(math.inf, 0), CALM, 0.05)

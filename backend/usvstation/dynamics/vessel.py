@@ -73,20 +73,20 @@ class VesselState:
 class Vessel:
     """A twin-propeller USV simulated step by step (sans-IO: no clock, no I/O).
 
-    >>> boat = Vessel(otter(), VesselState(x=50.0, y=0.0, psi=math.pi))
-    >>> boat.step(ThrustCommand(60.0, 60.0), Environment(), 0.05)
+    Example: ``Vessel(otter(), VesselState(50.0, 0.0, math.pi)).step(ThrustCommand(60.0,
+    60.0), Environment(), 0.05)``. The propellers start stopped unless
+    `set_initial_thrust` says otherwise.
     """
 
     def __init__(self, params: VesselParams, state: VesselState) -> None:
+        values = (state.x, state.y, state.psi, state.u, state.v, state.r, state.t)
+        if not all(math.isfinite(v) for v in values):
+            raise ValueError(f"vessel: initial state must be finite (got {state})")
         self.params = params
-        th = params.thrusters
-        start_n = 0.0
-        self._x = np.array([
-            state.x, state.y, state.psi, state.u, state.v, state.r, start_n, start_n,
-        ], dtype=float)
+        self._thrusters = params.thrusters
+        self._x = np.array([*values[:6], 0.0, 0.0], dtype=float)
         self._t = state.t
         self._shaft_cmd = (0.0, 0.0)
-        self._thrusters = th
 
     @property
     def state(self) -> VesselState:
