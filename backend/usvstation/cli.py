@@ -67,7 +67,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
 
     bench = sub.add_parser("bench", help="run a benchmark and print its figures")
-    bench.add_argument("name", choices=["planner"], help="which benchmark")
+    bench.add_argument("name", choices=["planner", "tracking"], help="which benchmark")
     bench.add_argument("--json", action="store_true", help="print one JSON object (default)")
     bench.add_argument("--scenarios", type=Path, help="folder of scenarios (default: public suite)")
     bench.add_argument("--seeds", type=int, default=5, help="seeds per scenario (default 5)")
@@ -150,6 +150,12 @@ def format_plan(plan: dict[str, Any]) -> str:
 
 
 def _cmd_bench(args: argparse.Namespace) -> int:
+    if args.name == "tracking":
+        from usvstation.bench.tracking import run_tracking_bench
+
+        result = run_tracking_bench(progress=lambda msg: print(msg, file=sys.stderr, flush=True))
+        print(json.dumps(result, indent=2))
+        return EXIT_OK
     from usvstation.bench.planner import render_markdown, run_planner_bench
 
     if args.markdown:

@@ -1,0 +1,212 @@
+"""Environment: current, second-order wave drift and wind (paper 000 eq. 2-5, paper 002 eq. 24).
+
+Directions are ramp-frame angles (radians, anticlockwise from +x) of where the
+flow goes to, like the scenario file's `*_dir_deg`. Forces are returned in the
+body frame (x forward, y to port, N anticlockwise) as numpy arrays [X, Y, N].
+
+The vessel model applies the current through the relative velocity (Fossen
+2021 ch. 10); `current_force` (eq. 2) is the same effect written as a force on
+a hull at rest and is not added on top, which would count the current twice.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from usvstation.dynamics.params import GRAVITY, RHO_AIR, RHO_WATER, VesselParams
+
+# WMO sea state code 3700: (lowest, highest) significant wave height in metres.
+SEA_STATE_HEIGHTS = {
+    0: (0.0, 0.0),
+    1: (0.0, 0.1),
+    2: (0.1, 0.5),
+    3: (0.5, 1.25),
+    4: (1.25, 2.5),
+    5: (2.5, 4.0),
+    6: (4.0, 6.0),
+    7: (6.0, 9.0),
+    8: (9.0, 14.0),
+}
+# Eq. 4's cubic fits are used up to this wavelength / length ratio and held there
+# beyond (they diverge for longer waves: W_y(2) = 19), see docs/tracking.md.
+MAX_FIT_RATIO = 1.0
+
+
+@dataclass(frozen=True)
+class WaveField:
+    """Regular waves: height h_w (m), period (s), wavelength (m), direction of travel (rad)."""
+
+    height: float
+    period: float
+    wavelength: float
+    direction: float
+
+    def __post_init__(self) -> None:
+        if self.height < 0.0 or self.period <= 0.0 or self.wavelength <= 0.0:
+            raise ValueError(
+                "waves: height must be >= 0, period and wavelength > 0 "
+                f"(got {self.height}, {self.period}, {self.wavelength})"
+            )
+
+    @classmethod
+    def from_wind(cls, wind_speed: float, direction: float) -> WaveField:
+        """Waves raised by a wind of `wind_speed` m/s (paper 000 eq. 5)."""
+        if wind_speed < 0.0:
+            raise ValueError(f"waves: wind speed must be >= 0 (got {wind_speed})")
+        v = wind_speed
+        height = 0.015 * v**2 + 1.5
+        period = -0.001 * v**3 + 0.042 * v**2 + 5.6
+        return cls(height, period, 0.54 * period**2, direction)
+
+    @classmethod
+    def from_sea_state(cls, code: int, direction: float) -> WaveField:
+        """Waves of WMO sea state `code`: the middle of its height band.
+
+        Eq. 5 gives h_w >= 1.5 m at any wind (sea state 4 or more), so the
+        height comes from the WMO table; the period and wavelength come from
+        eq. 5 at the wind that raises such a sea (Pierson-Moskowitz,
+        H_s = 0.21 U^2 / g).
+        """
+        if code not in SEA_STATE_HEIGHTS:
+            raise ValueError(f"waves: sea state must be 0..8 (got {code})")
+        lo, hi = SEA_STATE_HEIGHTS[code]
+        height = 0.5 * (lo + hi)
+        wind = math.sqrt(GRAVITY * height / 0.21)
+        from_eq5 = cls.from_wind(wind, direction)
+        return cls(height, from_eq5.period, from_eq5.wavelength, direction)
+
+
+@dataclass(frozen=True)
+class Wind:
+    """Wind of `speed` m/s blowing towards `direction` (rad)."""
+
+    speed: float
+    direction: float
+
+    def __post_init__(self) -> None:
+        if self.speed < 0.0:
+            raise ValueError(f"wind: speed must be >= 0 (got {self.speed})")
+
+
+@dataclass(frozen=True)
+class Environment:
+    """What acts on the boat: a uniform current (earth-frame velocity), waves and wind."""
+
+    current: tuple[float, float] = (0.0, 0.0)
+    waves: WaveField | None = None
+    wind: Wind | None = None
+
+    @classmethod
+    def with_current(
+        cls, speed: float, direction: float, waves: WaveField | None = None,
+        wind: Wind | None = None,
+    ) -> Environment:
+        """A current of `speed` m/s flowing towards `direction` (rad)."""
+        if speed < 0.0:
+            raise ValueError(f"current: speed must be >= 0 (got {speed})")
+        return cls((speed * math.cos(direction), speed * math.sin(direction)), waves, wind)
+
+    @classmethod
+    def from_scenario(cls, environment: Any, waves: WaveField | None = None) -> Environment:
+        """From a scenario's `environment` block (current and wind; directions in degrees).
+
+        Waves are not in the scenario file; pass them explicitly (eq. 5 would
+        make 1.5 m waves from any wind, which is rarely what a scenario means).
+        """
+        wind = None
+        if environment.wind_speed > 0.0:
+            wind = Wind(environment.wind_speed, math.radians(environment.wind_dir_deg))
+        return cls.with_current(
+            environment.current_speed, math.radians(environment.current_dir_deg), waves, wind,
+        )
+
+    @property
+    def calm(self) -> bool:
+        return self.current == (0.0, 0.0) and self.waves is None and self.wind is None
+
+    def current_body(self, psi: float) -> tuple[float, float]:
+        """Current velocity (u_c, v_c) in the body frame at heading psi."""
+        cx, cy = self.current
+        c, s = math.cos(psi), math.sin(psi)
+        return c * cx + s * cy, -s * cx + c * cy
+
+    def forces(self, params: VesselParams, psi: float, u: float, v: float) -> np.ndarray:
+        """Wave drift plus wind force [X, Y, N] at heading psi, body-axis ground velocity u, v."""
+        tau = np.zeros(3)
+        if self.waves is not None:
+            tau += wave_drift_force(params, self.waves, psi)
+        if self.wind is not None:
+            tau += wind_force(params, self.wind, psi, u, v)
+        return tau
+
+
+def drift_coefficients(ratio: float) -> tuple[float, float, float]:
+    """Daidola's wave drift coefficients W_x, W_y, W_n at wavelength / length `ratio` (eq. 4)."""
+    q = min(max(ratio, 0.0), MAX_FIT_RATIO)
+    wx = 0.05 - 0.2 * q + 0.75 * q**2 - 0.51 * q**3
+    wy = 0.46 + 6.83 * q - 15.65 * q**2 + 8.44 * q**3
+    wn = -0.11 + 0.68 * q - 0.79 * q**2 + 0.21 * q**3
+    return wx, wy, wn
+
+
+def wave_drift_force(params: VesselParams, waves: WaveField, psi: float) -> np.ndarray:
+    """Mean second-order wave drift force [X, Y, N] (paper 000 eq. 3-4).
+
+    chi is the encounter angle, the waves' direction of travel relative to the
+    bow (0: following seas). The yaw moment carries L^2 (eq. 3 prints L,
+    which is not a moment).
+    """
+    chi = waves.direction - psi
+    amplitude = 0.5 * waves.height
+    wx, wy, wn = drift_coefficients(waves.wavelength / params.length)
+    q = 0.5 * RHO_WATER * params.length * amplitude**2
+    return np.array([
+        q * math.cos(chi) * wx,
+        q * math.sin(chi) * wy,
+        q * params.length * math.sin(chi) * wn,
+    ])
+
+
+def wind_force(params: VesselParams, wind: Wind, psi: float, u: float, v: float) -> np.ndarray:
+    """Wind force [X, Y, N] from the relative wind (paper 002 eq. 24).
+
+    Coefficients C_x = -c_x cos(g), C_y = -c_y sin(g), C_N = -c_n sin(2g),
+    with g the angle the relative wind comes from (0: from ahead, pi/2: from
+    port), after Fossen (2021) sec. 10.1.
+    """
+    c, s = math.cos(psi), math.sin(psi)
+    wx, wy = wind.speed * math.cos(wind.direction), wind.speed * math.sin(wind.direction)
+    # Air velocity relative to the hull, body frame.
+    ax = c * wx + s * wy - u
+    ay = -s * wx + c * wy - v
+    speed2 = ax * ax + ay * ay
+    if speed2 == 0.0:
+        return np.zeros(3)
+    gamma = math.atan2(-ay, -ax)
+    cx, cy, cn = params.wind_coefficients
+    q = 0.5 * RHO_AIR * speed2
+    return np.array([
+        -q * cx * math.cos(gamma) * params.frontal_area_air,
+        -q * cy * math.sin(gamma) * params.lateral_area_air,
+        -q * cn * math.sin(2.0 * gamma) * params.lateral_area_air * params.length,
+    ])
+
+
+def current_force(params: VesselParams, speed: float, encounter: float) -> np.ndarray:
+    """Force [X, Y, N] of a current on a hull at rest (paper 000 eq. 2, paper 002 eq. 25).
+
+    `encounter` is the direction the current flows to relative to the bow
+    (0: from astern). Coefficients C_x = c_x cos, C_y = c_y sin,
+    C_n = c_n sin(2 beta) (estimates); areas are the submerged projections.
+    """
+    cx, cy, cn = params.current_coefficients
+    q = 0.5 * RHO_WATER * speed**2
+    return np.array([
+        q * params.frontal_area_water * cx * math.cos(encounter),
+        q * params.lateral_area_water * cy * math.sin(encounter),
+        q * params.lateral_area_water * params.length * cn * math.sin(2.0 * encounter),
+    ])
