@@ -217,6 +217,27 @@ def track_plan(plan: dict[str, Any], method: str, params: VesselParams, env: Env
     return result
 
 
+SPEED_HEADROOM = 0.8  # plan at most this share of the simulated boat's calm-water top speed
+
+
+def scenario_for_vessel(scenario: Any, params: VesselParams,
+                        headroom: float = SPEED_HEADROOM) -> Any:
+    """The scenario with its vessel limits replaced by those of the boat that will sail it.
+
+    A plan must be sailable by the boat that executes it: hull length from
+    the model, top planned speed `headroom` times its calm-water top speed
+    (rounded down to 0.1 m/s) so that it can still catch up in current and
+    waves; the other limits stay the scenario's.
+    """
+    from usvstation.scenario import parse_scenario
+
+    data = scenario.model_dump()
+    speed_max = math.floor(10.0 * headroom * params.top_speed) / 10.0
+    data["vessel"].update(length=params.length,
+                          speed_max=max(speed_max, data["vessel"]["speed_min"] + 0.2))
+    return parse_scenario(data)
+
+
 def disturbed(setup: DisturbedSetup | None = None, scenarios: tuple[str, ...] = PUBLIC_SCENARIOS,
               methods: tuple[str, ...] = METHODS, params: VesselParams | None = None,
               progress: Callable[[str], None] | None = None) -> list[dict[str, Any]]:
@@ -229,7 +250,7 @@ def disturbed(setup: DisturbedSetup | None = None, scenarios: tuple[str, ...] = 
     env = s.environment()
     rows = []
     for name in scenarios:
-        plan = plan_scenario(load_scenario(name), seed=s.seed)
+        plan = plan_scenario(scenario_for_vessel(load_scenario(name), vessel), seed=s.seed)
         for method in methods:
             if progress:
                 progress(f"tracking {name} with {method}")
@@ -260,6 +281,11 @@ def run_tracking_bench(progress: Callable[[str], None] | None = None) -> dict[st
         "disturbed_conditions": {
             "vessel": vessel.name,
             "vessel_top_speed_mps": round(vessel.top_speed, 3),
+            "plan_vessel": {
+                "length_m": vessel.length,
+                "speed_max_mps": math.floor(10.0 * SPEED_HEADROOM * vessel.top_speed) / 10.0,
+                "note": "public scenarios planned with the simulated boat's own limits",
+            },
             "current_speed_mps": setup.current_speed,
             "current_dir_deg": round(math.degrees(setup.current_dir), 1),
             "sea_state": setup.sea_state,
