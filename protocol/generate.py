@@ -19,6 +19,7 @@ import argparse
 import json
 import random
 import sys
+import textwrap
 import tomllib
 import zlib
 from pathlib import Path
@@ -71,6 +72,9 @@ def load_definition(path: Path = DEFINITION) -> dict[str, Any]:
         body = HEADER_LEN + payload_max(msg) + CRC_LEN
         if body >= COBS_MAX_BLOCK:
             raise ValueError(f"{msg['name']}: frame of {body} bytes needs a COBS 0xFF block")
+    clash = set(d["enums"]) & {camel(msg["name"]) for msg in d["messages"]}
+    if clash:
+        raise ValueError(f"enum names clash with message type names: {sorted(clash)}")
     hb = d["messages"][0]
     frozen = [(f["name"], f["type"]) for f in hb["fields"][:2]]
     if hb["id"] != 0 or frozen != [("definition_crc", "u32"), ("protocol_version", "u8")]:
@@ -147,10 +151,12 @@ def gen_python(d: dict[str, Any]) -> str:
         out += [f"    {k} = {v}" for k, v in values.items()]
     for msg in d["messages"]:
         out += ["", "", f"class {camel(msg['name'])}(NamedTuple):"]
-        out.append(f'    """{msg["name"]} (id {msg["id"]}, from {msg["direction"]}): {msg["doc"]}')
+        head = f'"""{msg["name"]} (id {msg["id"]}, from {msg["direction"]}): {msg["doc"]}'
+        out += textwrap.wrap(head, 96, initial_indent="    ", subsequent_indent="    ")
         out.append("")
         for f in msg["fields"]:
-            out.append(f"    {f['name']}: {f['type']}; {_doc(f)}".rstrip("; "))
+            line = f"{f['name']}: {f['type']}; {_doc(f)}".rstrip("; ")
+            out += textwrap.wrap(line, 96, initial_indent="    ", subsequent_indent="        ")
         out.append('    """')
         out.append("")
         for f in msg["fields"]:
@@ -275,7 +281,7 @@ def gen_c_header(d: dict[str, Any]) -> str:
             o.append(f"    return {off}u;")
         o.append("}")
         # unpack
-        o.append("/* Read a payload of len bytes; returns 1, or 0 if len is wrong for the message. */")
+        o.append("/* Read a payload of len bytes; returns 1, or 0 if len is wrong for it. */")
         o.append(f"static inline int usv_{cn}_unpack(const uint8_t *p, size_t len, usv_{cn}_t *m)")
         o.append("{")
         o.append(f"    if (len < USV_{m['name']}_MIN_LEN || len > USV_{m['name']}_MAX_LEN) "
@@ -295,6 +301,13 @@ def gen_c_header(d: dict[str, Any]) -> str:
     for m in d["messages"]:
         o.append(f"    usv_{_c_name(m)}_t {_c_name(m)};")
     o += ["} usv_message_t;", ""]
+    o.append("/* Is msg_id a message of this protocol version? */")
+    o.append("static inline int usv_msg_known(uint8_t msg_id)")
+    o.append("{")
+    o.append("    switch (msg_id) {")
+    for m in d["messages"]:
+        o.append(f"    case USV_MSG_{m['name']}:")
+    o += ["        return 1;", "    default: return 0;", "    }", "}", ""]
     o.append("/* Is len a valid payload length for msg_id? (0 for unknown ids) */")
     o.append("static inline int usv_payload_len_ok(uint8_t msg_id, size_t len)")
     o.append("{")
@@ -318,7 +331,8 @@ def gen_c_header(d: dict[str, Any]) -> str:
     o.append("{")
     o.append("    switch (msg_id) {")
     for m in d["messages"]:
-        o.append(f"    case USV_MSG_{m['name']}: return usv_{_c_name(m)}_pack(&m->{_c_name(m)}, p);")
+        o.append(f"    case USV_MSG_{m['name']}: "
+                 f"return usv_{_c_name(m)}_pack(&m->{_c_name(m)}, p);")
     o += ["    default: return 0;", "    }", "}", "", "#endif /* USV_MESSAGES_H */", ""]
     return "\n".join(o)
 
@@ -453,7 +467,7 @@ def sample_values(msg: dict[str, Any], kind: str, rng: random.Random) -> dict[st
 
 def gen_vectors(d: dict[str, Any]) -> tuple[str, str]:
     sys.path.insert(0, str(ROOT / "backend"))
-    from usvstation.link import codec, messages  # noqa: PLC0415 (needs the fresh module)
+    from usvstation.link import codec, messages
 
     rng = random.Random(20240604)
     enc = codec.Encoder()
@@ -488,7 +502,7 @@ def gen_vectors(d: dict[str, Any]) -> tuple[str, str]:
 
 
 def frame_seq(frame: bytes) -> int:
-    from usvstation.link import codec  # noqa: PLC0415
+    from usvstation.link import codec
 
     return codec.decode_body(frame)[2]
 

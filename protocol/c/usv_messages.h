@@ -10,7 +10,7 @@
 #include <string.h>
 
 #define USV_PROTOCOL_VERSION 1u
-#define USV_DEFINITION_CRC 0x1B1F5F5CUL
+#define USV_DEFINITION_CRC 0xC33D4F92UL
 #define USV_MAX_MISSION_ITEMS 256u
 #define USV_STATUS_TEXT_MAX 50u
 #define USV_HEARTBEAT_PERIOD_MS 1000u
@@ -50,11 +50,11 @@ enum usv_flag {
     USV_FLAG_LINK_LOST = 4
 };
 
-enum usv_command {
-    USV_COMMAND_START = 1,
-    USV_COMMAND_HOLD = 2,
-    USV_COMMAND_RESUME = 3,
-    USV_COMMAND_ABORT = 4
+enum usv_command_code {
+    USV_COMMAND_CODE_START = 1,
+    USV_COMMAND_CODE_HOLD = 2,
+    USV_COMMAND_CODE_RESUME = 3,
+    USV_COMMAND_CODE_ABORT = 4
 };
 
 enum usv_command_result {
@@ -182,7 +182,7 @@ static inline size_t usv_heartbeat_pack(const usv_heartbeat_t *m, uint8_t *p)
     usv_put_u32(p + 11, m->uptime_ms);
     return 15u;
 }
-/* Read a payload of len bytes; returns 1, or 0 if len is wrong for the message. */
+/* Read a payload of len bytes; returns 1, or 0 if len is wrong for it. */
 static inline int usv_heartbeat_unpack(const uint8_t *p, size_t len, usv_heartbeat_t *m)
 {
     if (len < USV_HEARTBEAT_MIN_LEN || len > USV_HEARTBEAT_MAX_LEN) return 0;
@@ -212,7 +212,7 @@ static inline size_t usv_status_text_pack(const usv_status_text_t *m, uint8_t *p
     memcpy(p + 1, m->text, n);
     return 1u + n;
 }
-/* Read a payload of len bytes; returns 1, or 0 if len is wrong for the message. */
+/* Read a payload of len bytes; returns 1, or 0 if len is wrong for it. */
 static inline int usv_status_text_unpack(const uint8_t *p, size_t len, usv_status_text_t *m)
 {
     if (len < USV_STATUS_TEXT_MIN_LEN || len > USV_STATUS_TEXT_MAX_LEN) return 0;
@@ -225,7 +225,7 @@ static inline int usv_status_text_unpack(const uint8_t *p, size_t len, usv_statu
 /* COMMAND (id 2, from station): Ask the boat to START, HOLD, RESUME or ABORT. Retries reuse command_id; the boat executes a command_id once and repeats its COMMAND_ACK. */
 typedef struct {
     uint16_t command_id; /* chosen by the station, unique among recent commands */
-    uint8_t command; /* enum Command */
+    uint8_t command; /* enum CommandCode */
     uint16_t mission_id; /* START: the mission to start (must be the active one); else 0 */
 } usv_command_t;
 
@@ -237,7 +237,7 @@ static inline size_t usv_command_pack(const usv_command_t *m, uint8_t *p)
     usv_put_u16(p + 3, m->mission_id);
     return 5u;
 }
-/* Read a payload of len bytes; returns 1, or 0 if len is wrong for the message. */
+/* Read a payload of len bytes; returns 1, or 0 if len is wrong for it. */
 static inline int usv_command_unpack(const uint8_t *p, size_t len, usv_command_t *m)
 {
     if (len < USV_COMMAND_MIN_LEN || len > USV_COMMAND_MAX_LEN) return 0;
@@ -250,7 +250,7 @@ static inline int usv_command_unpack(const uint8_t *p, size_t len, usv_command_t
 /* COMMAND_ACK (id 3, from boat): The boat's answer to a COMMAND. */
 typedef struct {
     uint16_t command_id;
-    uint8_t command; /* enum Command */
+    uint8_t command; /* enum CommandCode */
     uint8_t result; /* enum CommandResult */
     uint8_t state; /* the boat's state after the command; enum State */
 } usv_command_ack_t;
@@ -264,7 +264,7 @@ static inline size_t usv_command_ack_pack(const usv_command_ack_t *m, uint8_t *p
     usv_put_u8(p + 4, m->state);
     return 5u;
 }
-/* Read a payload of len bytes; returns 1, or 0 if len is wrong for the message. */
+/* Read a payload of len bytes; returns 1, or 0 if len is wrong for it. */
 static inline int usv_command_ack_unpack(const uint8_t *p, size_t len, usv_command_ack_t *m)
 {
     if (len < USV_COMMAND_ACK_MIN_LEN || len > USV_COMMAND_ACK_MAX_LEN) return 0;
@@ -296,7 +296,7 @@ static inline size_t usv_mission_begin_pack(const usv_mission_begin_t *m, uint8_
     usv_put_u16(p + 16, m->ramp_bearing_cdeg);
     return 18u;
 }
-/* Read a payload of len bytes; returns 1, or 0 if len is wrong for the message. */
+/* Read a payload of len bytes; returns 1, or 0 if len is wrong for it. */
 static inline int usv_mission_begin_unpack(const uint8_t *p, size_t len, usv_mission_begin_t *m)
 {
     if (len < USV_MISSION_BEGIN_MIN_LEN || len > USV_MISSION_BEGIN_MAX_LEN) return 0;
@@ -332,7 +332,7 @@ static inline size_t usv_mission_item_pack(const usv_mission_item_t *m, uint8_t 
     usv_put_u16(p + 18, m->heading_cdeg);
     return 20u;
 }
-/* Read a payload of len bytes; returns 1, or 0 if len is wrong for the message. */
+/* Read a payload of len bytes; returns 1, or 0 if len is wrong for it. */
 static inline int usv_mission_item_unpack(const uint8_t *p, size_t len, usv_mission_item_t *m)
 {
     if (len < USV_MISSION_ITEM_MIN_LEN || len > USV_MISSION_ITEM_MAX_LEN) return 0;
@@ -361,7 +361,7 @@ static inline size_t usv_mission_end_pack(const usv_mission_end_t *m, uint8_t *p
     usv_put_u32(p + 4, m->mission_crc);
     return 8u;
 }
-/* Read a payload of len bytes; returns 1, or 0 if len is wrong for the message. */
+/* Read a payload of len bytes; returns 1, or 0 if len is wrong for it. */
 static inline int usv_mission_end_unpack(const uint8_t *p, size_t len, usv_mission_end_t *m)
 {
     if (len < USV_MISSION_END_MIN_LEN || len > USV_MISSION_END_MAX_LEN) return 0;
@@ -388,7 +388,7 @@ static inline size_t usv_mission_ack_pack(const usv_mission_ack_t *m, uint8_t *p
     usv_put_u16(p + 5, m->received);
     return 7u;
 }
-/* Read a payload of len bytes; returns 1, or 0 if len is wrong for the message. */
+/* Read a payload of len bytes; returns 1, or 0 if len is wrong for it. */
 static inline int usv_mission_ack_unpack(const uint8_t *p, size_t len, usv_mission_ack_t *m)
 {
     if (len < USV_MISSION_ACK_MIN_LEN || len > USV_MISSION_ACK_MAX_LEN) return 0;
@@ -418,7 +418,7 @@ static inline size_t usv_mission_nak_pack(const usv_mission_nak_t *m, uint8_t *p
     usv_put_u16(p + 6, m->received);
     return 8u;
 }
-/* Read a payload of len bytes; returns 1, or 0 if len is wrong for the message. */
+/* Read a payload of len bytes; returns 1, or 0 if len is wrong for it. */
 static inline int usv_mission_nak_unpack(const uint8_t *p, size_t len, usv_mission_nak_t *m)
 {
     if (len < USV_MISSION_NAK_MIN_LEN || len > USV_MISSION_NAK_MAX_LEN) return 0;
@@ -475,7 +475,7 @@ static inline size_t usv_telemetry_pack(const usv_telemetry_t *m, uint8_t *p)
     usv_put_u8(p + 36, m->flags);
     return 37u;
 }
-/* Read a payload of len bytes; returns 1, or 0 if len is wrong for the message. */
+/* Read a payload of len bytes; returns 1, or 0 if len is wrong for it. */
 static inline int usv_telemetry_unpack(const uint8_t *p, size_t len, usv_telemetry_t *m)
 {
     if (len < USV_TELEMETRY_MIN_LEN || len > USV_TELEMETRY_MAX_LEN) return 0;
@@ -515,7 +515,7 @@ static inline size_t usv_guidance_setpoint_pack(const usv_guidance_setpoint_t *m
     usv_put_u16(p + 4, m->valid_ms);
     return 6u;
 }
-/* Read a payload of len bytes; returns 1, or 0 if len is wrong for the message. */
+/* Read a payload of len bytes; returns 1, or 0 if len is wrong for it. */
 static inline int usv_guidance_setpoint_unpack(const uint8_t *p, size_t len, usv_guidance_setpoint_t *m)
 {
     if (len < USV_GUIDANCE_SETPOINT_MIN_LEN || len > USV_GUIDANCE_SETPOINT_MAX_LEN) return 0;
@@ -538,6 +538,26 @@ typedef union {
     usv_telemetry_t telemetry;
     usv_guidance_setpoint_t guidance_setpoint;
 } usv_message_t;
+
+/* Is msg_id a message of this protocol version? */
+static inline int usv_msg_known(uint8_t msg_id)
+{
+    switch (msg_id) {
+    case USV_MSG_HEARTBEAT:
+    case USV_MSG_STATUS_TEXT:
+    case USV_MSG_COMMAND:
+    case USV_MSG_COMMAND_ACK:
+    case USV_MSG_MISSION_BEGIN:
+    case USV_MSG_MISSION_ITEM:
+    case USV_MSG_MISSION_END:
+    case USV_MSG_MISSION_ACK:
+    case USV_MSG_MISSION_NAK:
+    case USV_MSG_TELEMETRY:
+    case USV_MSG_GUIDANCE_SETPOINT:
+        return 1;
+    default: return 0;
+    }
+}
 
 /* Is len a valid payload length for msg_id? (0 for unknown ids) */
 static inline int usv_payload_len_ok(uint8_t msg_id, size_t len)

@@ -32,7 +32,7 @@ Message = Any  # one of the NamedTuple types in usvstation.link.messages
 
 
 class _Spec:
-    __slots__ = ("cls", "fixed_len", "max_len", "make", "msg_id", "struct", "text_max")
+    __slots__ = ("cls", "fixed_len", "make", "max_len", "msg_id", "struct", "text_max")
 
     def __init__(self, cls: type) -> None:
         self.cls = cls

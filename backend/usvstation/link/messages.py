@@ -8,7 +8,7 @@ from typing import NamedTuple
 
 PROTOCOL = "usv-link"
 PROTOCOL_VERSION = 1
-DEFINITION_CRC = 0x1B1F5F5C
+DEFINITION_CRC = 0xC33D4F92
 MAX_MISSION_ITEMS = 256
 STATUS_TEXT_MAX = 50
 HEARTBEAT_PERIOD_MS = 1000
@@ -42,7 +42,7 @@ class Flag(IntFlag):
     LINK_LOST = 4
 
 
-class Command(IntEnum):
+class CommandCode(IntEnum):
     START = 1
     HOLD = 2
     RESUME = 3
@@ -93,7 +93,9 @@ class Severity(IntEnum):
 
 
 class Heartbeat(NamedTuple):
-    """HEARTBEAT (id 0, from both): Sent by both sides every HEARTBEAT_PERIOD_MS, and at once on a state change. The first two fields are frozen for all versions: a receiver reads them from a HEARTBEAT of any version to report a mismatch.
+    """HEARTBEAT (id 0, from both): Sent by both sides every HEARTBEAT_PERIOD_MS, and at once on
+    a state change. The first two fields are frozen for all versions: a receiver reads them from
+    a HEARTBEAT of any version to report a mismatch.
 
     definition_crc: u32; CRC-32 of the sender's message definitions
     protocol_version: u8; the sender's protocol version
@@ -121,7 +123,8 @@ class Heartbeat(NamedTuple):
 
 
 class StatusText(NamedTuple):
-    """STATUS_TEXT (id 1, from boat): A human-readable event (failsafe, mission activated, errors).
+    """STATUS_TEXT (id 1, from boat): A human-readable event (failsafe, mission activated,
+    errors).
 
     severity: u8; enum Severity
     text: text; UTF-8, not NUL-terminated; length from the frame
@@ -137,10 +140,11 @@ class StatusText(NamedTuple):
 
 
 class Command(NamedTuple):
-    """COMMAND (id 2, from station): Ask the boat to START, HOLD, RESUME or ABORT. Retries reuse command_id; the boat executes a command_id once and repeats its COMMAND_ACK.
+    """COMMAND (id 2, from station): Ask the boat to START, HOLD, RESUME or ABORT. Retries reuse
+    command_id; the boat executes a command_id once and repeats its COMMAND_ACK.
 
     command_id: u16; chosen by the station, unique among recent commands
-    command: u8; enum Command
+    command: u8; enum CommandCode
     mission_id: u16; START: the mission to start (must be the active one); else 0
     """
 
@@ -158,7 +162,7 @@ class CommandAck(NamedTuple):
     """COMMAND_ACK (id 3, from boat): The boat's answer to a COMMAND.
 
     command_id: u16
-    command: u8; enum Command
+    command: u8; enum CommandCode
     result: u8; enum CommandResult
     state: u8; the boat's state after the command; enum State
     """
@@ -175,7 +179,9 @@ class CommandAck(NamedTuple):
 
 
 class MissionBegin(NamedTuple):
-    """MISSION_BEGIN (id 4, from station): Open the staging of a mission. The boat clears its staging buffer unless it is already staging this mission_id with the same count and CRC (a retry).
+    """MISSION_BEGIN (id 4, from station): Open the staging of a mission. The boat clears its
+    staging buffer unless it is already staging this mission_id with the same count and CRC (a
+    retry).
 
     mission_id: u16; non-zero, chosen by the station
     count: u16; number of MISSION_ITEMs, 1..MAX_MISSION_ITEMS
@@ -199,7 +205,8 @@ class MissionBegin(NamedTuple):
 
 
 class MissionItem(NamedTuple):
-    """MISSION_ITEM (id 5, from station): One waypoint. Between waypoints the boat moves on the straight segment, position linear in time.
+    """MISSION_ITEM (id 5, from station): One waypoint. Between waypoints the boat moves on the
+    straight segment, position linear in time.
 
     mission_id: u16
     index: u16; 0..count-1
@@ -225,7 +232,8 @@ class MissionItem(NamedTuple):
 
 
 class MissionEnd(NamedTuple):
-    """MISSION_END (id 6, from station): Close the staging: the boat activates the mission only if all items are staged and their CRC-32 matches (atomic swap).
+    """MISSION_END (id 6, from station): Close the staging: the boat activates the mission only
+    if all items are staged and their CRC-32 matches (atomic swap).
 
     mission_id: u16
     count: u16
@@ -243,7 +251,8 @@ class MissionEnd(NamedTuple):
 
 
 class MissionAck(NamedTuple):
-    """MISSION_ACK (id 7, from boat): Positive answer to MISSION_BEGIN, MISSION_ITEM (also for duplicates) or MISSION_END (the mission is now active).
+    """MISSION_ACK (id 7, from boat): Positive answer to MISSION_BEGIN, MISSION_ITEM (also for
+    duplicates) or MISSION_END (the mission is now active).
 
     mission_id: u16
     stage: u8; enum MissionStage
@@ -333,7 +342,8 @@ class Telemetry(NamedTuple):
 
 
 class GuidanceSetpoint(NamedTuple):
-    """GUIDANCE_SETPOINT (id 10, from station): Shore-assisted mode: steer this heading at this speed for valid_ms, then fall back to onboard guidance (AUTO). Ignored unless RUNNING.
+    """GUIDANCE_SETPOINT (id 10, from station): Shore-assisted mode: steer this heading at this
+    speed for valid_ms, then fall back to onboard guidance (AUTO). Ignored unless RUNNING.
 
     heading_cdeg: u16; 0.01 deg; desired compass heading, 0..35999
     speed_cms: u16; cm/s; desired speed
