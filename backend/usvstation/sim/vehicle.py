@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
+from itertools import pairwise
 from typing import Protocol, runtime_checkable
 
 import numpy as np
@@ -110,7 +111,7 @@ class KinematicVehicle:
 
     def set_mission(self, waypoints: Sequence[Waypoint]) -> None:
         wps = list(waypoints)
-        if not wps or any(b.t <= a.t for a, b in zip(wps, wps[1:], strict=False)):
+        if not wps or any(b.t <= a.t for a, b in pairwise(wps)):
             raise ValueError("a mission needs waypoints with increasing times")
         self._wps = wps
         self._tau = wps[0].t
