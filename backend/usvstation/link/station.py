@@ -55,7 +55,6 @@ class BoatLink:
         self.reconnect_s = reconnect_s
         self.stream: ByteStream | None = None
         self._task: asyncio.Task | None = None
-        self._wake = asyncio.Event()
         self._write_lock = asyncio.Lock()
         self._subscribers: list[asyncio.Queue] = []
         self._callbacks: list[Callable[[Any], None]] = []
@@ -208,7 +207,6 @@ class BoatLink:
 
     # ---- I/O loop
     async def _flush(self) -> None:
-        self._wake.set()
         data = self.protocol.data_to_send()
         if not data or self.stream is None:
             return
@@ -259,7 +257,6 @@ class BoatLink:
         while not reader.done() and self.stream is not None:
             self._dispatch(self.protocol.poll(self._now()))
             await self._flush()
-            self._wake.clear()
-            delay = min(max(self.protocol.next_deadline() - self._now(), 0.001), 0.1)
-            with contextlib.suppress(TimeoutError):
-                await asyncio.wait_for(self._wake.wait(), delay)
+            # requests flush their own bytes at once; this loop only serves timers
+            await asyncio.sleep(min(max(self.protocol.next_deadline() - self._now(), 0.001),
+                                    0.02))

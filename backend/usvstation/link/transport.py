@@ -32,7 +32,7 @@ class SerialStream:
 
     @classmethod
     async def open(cls, url: str, baud: int = 57600) -> SerialStream:
-        import serial_asyncio  # noqa: PLC0415 (heavy optional import at the edge)
+        import serial_asyncio
 
         reader, writer = await serial_asyncio.open_serial_connection(url=url, baudrate=baud)
         return cls(reader, writer)

@@ -233,11 +233,11 @@ class BoatProtocol:
         self.last_rx = now
         if not self.linked:
             self.linked = True
+            self._report_state(now)  # answer at once: completes the station's handshake
             if self.failsafe:
                 self._text(m.Severity.WARNING, "link restored; holding: RESUME to continue")
             else:
                 self._text(m.Severity.INFO, "link up")
-            self._report_state(now)  # answer at once: completes the handshake
 
     def _late_duplicate(self, it: m.MissionItem) -> m.MissionAck | None:
         """An item of the already active mission (its ACK was lost): acknowledge again."""

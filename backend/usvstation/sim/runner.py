@@ -30,9 +30,8 @@ class SimulatedBoat:
             while not reader.done() and not stop.is_set():
                 self.boat.update(time.monotonic())
                 await self._flush(stream)
-                delay = min(max(self.boat.next_deadline() - time.monotonic(), 0.0005), 0.02)
-                with contextlib.suppress(TimeoutError):
-                    await asyncio.wait_for(stop.wait(), delay)
+                await asyncio.sleep(
+                    min(max(self.boat.next_deadline() - time.monotonic(), 0.0005), 0.02))
         finally:
             reader.cancel()
             with contextlib.suppress(asyncio.CancelledError, Exception):
