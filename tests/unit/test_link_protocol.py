@@ -297,3 +297,32 @@ def test_mission_from_plan_refuses_bad_input_with_a_clear_message():
         mission_from_plan([{**wps[0], "speed": -1}], FRAME, 1)
     with pytest.raises(MissionError, match="mission_id"):
         mission_from_plan(wps[:1], FRAME, 0)
+
+
+def test_a_looped_back_line_is_not_a_link():
+    """Each side ignores its own heartbeat echoed back (a loopback plug or a radio echo)."""
+    h = Harness()
+    h.station.poll(0.0)
+    echo = h.station.data_to_send()
+    assert h.station.receive_data(echo, 0.01) == [] and not h.station.link_up
+    h.boat.update(0.0)
+    h.boat.receive_data(h.boat.data_to_send(), 0.01)
+    assert not h.boat.linked
+
+
+def test_upload_failure_reasons_name_the_message():
+    from usvstation.link.protocol import LinkConfig, MissionUploader
+
+    mission = make_mission(7, 4)
+    up = MissionUploader(mission, LinkConfig(), 0.0)
+    assert up.start(0.0) == [mission.begin()]
+    sent, _ = up.handle(m.MissionAck(7, m.MissionStage.BEGIN, 0, 0), 0.01)
+    assert sent == list(mission.items)  # window of 8 holds all 4
+    _, events = up.handle(m.MissionNak(7, m.MissionStage.ITEM, 2, m.NakReason.UNKNOWN_MISSION,
+                                       0), 0.02)
+    assert events[0].reason == "boat refused item 2: UNKNOWN_MISSION" and not events[0].ok
+    up = MissionUploader(mission, LinkConfig(max_attempts=3), 0.0)
+    up.start(0.0)
+    for t in (0.31, 0.62, 0.93):
+        _, events = up.poll(t)
+    assert events[0].reason == "MISSION_BEGIN not acknowledged after 3 attempts"

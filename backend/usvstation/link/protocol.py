@@ -221,11 +221,11 @@ class MissionUploader:
             self.phase = "items"
             self.next_index = min(self.next_index, nak.index)
             return self._fill_window(now), []
-        if reason == m.NakReason.CONFLICT and nak.stage == m.MissionStage.ITEM:
+        if nak.stage == m.MissionStage.ITEM:
             what = f"item {nak.index}"
         else:
             what = f"MISSION_{m.MissionStage(nak.stage).name}" \
-                if nak.stage in m.MissionStage._value2member_map_ else "message"
+                if nak.stage in m.MissionStage._value2member_map_ else "a mission message"
         name = reason.name if isinstance(reason, m.NakReason) else f"reason {reason}"
         self._finish(False, f"boat refused {what}: {name}", now)
         return [], [self.result]
@@ -271,8 +271,9 @@ class CommandSender:
         return cid, msg
 
     def handle(self, ack: m.CommandAck) -> list[Event]:
-        if self.pending.pop(ack.command_id, None) is None:
-            return []  # a duplicate answer to a retry
+        sent = self.pending.pop(ack.command_id, None)
+        if sent is None or sent[0].command != ack.command:
+            return []  # a duplicate answer to a retry, or not an answer to this command
         result = m.CommandResult(ack.result) if ack.result in m.CommandResult._value2member_map_ \
             else None
         state = m.State(ack.state) if ack.state in m.State._value2member_map_ else None
@@ -418,6 +419,8 @@ class StationProtocol:
 
     def _handle(self, msg: Any, now: float) -> list[Event]:
         if isinstance(msg, m.Heartbeat):
+            if msg.sender == m.Sender.STATION and heartbeat_matches(msg):
+                return []  # our own heartbeat echoed by a looped-back line: not the boat
             events = self.monitor.on_heartbeat(msg, now)
             if heartbeat_matches(msg):
                 self.boat_heartbeat = msg

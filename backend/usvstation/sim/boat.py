@@ -218,6 +218,8 @@ class BoatProtocol:
             self._on_guidance(msg, now)
 
     def _on_heartbeat(self, hb: m.Heartbeat, now: float) -> None:
+        if hb.sender == m.Sender.BOAT and heartbeat_matches(hb):
+            return  # our own heartbeat echoed back: not a station
         if not heartbeat_matches(hb):
             self.mismatch = mismatch_message("station", hb, me="boat")
             short = (f"mismatch station v{hb.protocol_version} 0x{hb.definition_crc:08X} "
