@@ -66,8 +66,31 @@ def build_parser() -> argparse.ArgumentParser:
         metavar="KEY=VALUE", help="override a planner option, e.g. --set population=120",
     )
 
+    sim = sub.add_parser(
+        "sim", help="run the simulated boat on a serial port",
+        description=(
+            "Run the simulated boat (the boat side of the usv-link protocol with a kinematic "
+            "vehicle) on a serial device or pyserial URL; --link pty creates a pseudo-terminal "
+            "and prints the device path for the station to open."
+        ),
+    )
+    sim.add_argument("--link", required=True,
+                     help="serial device (/dev/ttyUSB0), pyserial URL (socket://host:port) or pty")
+    sim.add_argument("--baud", type=int, default=57600, help="baud rate (default 57600)")
+    sim.add_argument("--sim-speed", type=float, default=1.0,
+                     help="boat time runs this many times faster than the wall clock")
+    sim.add_argument("--telemetry-hz", type=float, default=5.0,
+                     help="telemetry rate, up to 50 (default 5)")
+    sim.add_argument("--failsafe-s", type=float, default=3.0,
+                     help="hold station after this long without the station (default 3)")
+    sim.add_argument("--scenario", default="case1",
+                     help="scenario giving the origin and start pose (default case1)")
+    sim.add_argument("--seed", type=int, default=0, help="GPS noise seed")
+    sim.add_argument("--duration", type=float, default=None,
+                     help="stop after this many seconds (default: run until interrupted)")
+
     bench = sub.add_parser("bench", help="run a benchmark and print its figures")
-    bench.add_argument("name", choices=["planner", "tracking"], help="which benchmark")
+    bench.add_argument("name", choices=["planner", "tracking", "link"], help="which benchmark")
     bench.add_argument("--json", action="store_true", help="print one JSON object (default)")
     bench.add_argument("--scenarios", type=Path, help="folder of scenarios (default: public suite)")
     bench.add_argument("--seeds", type=int, default=5, help="seeds per scenario (default 5)")
@@ -88,6 +111,8 @@ def main(argv: list[str] | None = None) -> int:
             return _cmd_plan(args)
         if args.command == "bench":
             return _cmd_bench(args)
+        if args.command == "sim":
+            return _cmd_sim(args)
     except CliError as exc:
         print(f"usv-station {args.command}: {exc}", file=sys.stderr)
         return exc.code
@@ -149,7 +174,25 @@ def format_plan(plan: dict[str, Any]) -> str:
     return "\n".join(lines)
 
 
+def _cmd_sim(args: argparse.Namespace) -> int:
+    import asyncio
+
+    from usvstation.sim.cli import run_sim
+
+    try:
+        return asyncio.run(run_sim(args))
+    except ValueError as exc:
+        raise CliError(str(exc), EXIT_INVALID) from None
+
+
 def _cmd_bench(args: argparse.Namespace) -> int:
+    if args.name == "link":
+        from usvstation.bench.link import run_link_bench
+
+        result = run_link_bench(quick=args.quick,
+                                progress=lambda msg: print(msg, file=sys.stderr, flush=True))
+        print(json.dumps(result, indent=2))
+        return EXIT_OK
     if args.name == "tracking":
         from usvstation.bench.tracking import run_tracking_bench
 

@@ -1,0 +1,227 @@
+"""Byte transports for usv-link: serial ports and pyserial URLs (pyserial-asyncio), a
+pseudo-terminal pair, and a fault-injecting, line-rate-pacing wrapper.
+
+All of them are `ByteStream`s: `await read()` returns the next bytes (b"" once closed),
+`await write(data)` queues bytes, `await close()`.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import os
+import tty
+from typing import Protocol
+
+import numpy as np
+
+
+class ByteStream(Protocol):
+    async def read(self) -> bytes: ...
+
+    async def write(self, data: bytes) -> None: ...
+
+    async def close(self) -> None: ...
+
+
+class SerialStream:
+    """A serial device (/dev/ttyUSB0, /dev/pts/N) or pyserial URL (socket://host:port)."""
+
+    def __init__(self, reader: asyncio.StreamReader, writer: asyncio.StreamWriter) -> None:
+        self._reader, self._writer = reader, writer
+
+    @classmethod
+    async def open(cls, url: str, baud: int = 57600) -> SerialStream:
+        import serial_asyncio
+
+        reader, writer = await serial_asyncio.open_serial_connection(url=url, baudrate=baud)
+        return cls(reader, writer)
+
+    async def read(self) -> bytes:
+        try:
+            return await self._reader.read(4096)
+        except (OSError, ConnectionError) as exc:  # pyserial raises SerialException(OSError)
+            raise ConnectionError(str(exc)) from exc
+
+    async def write(self, data: bytes) -> None:
+        if self._writer.is_closing():
+            raise ConnectionError("the port is closed")
+        self._writer.write(data)
+        await self._writer.drain()
+
+    async def close(self) -> None:
+        self._writer.close()
+        with contextlib.suppress(Exception):
+            await self._writer.wait_closed()
+
+
+class PtyPair:
+    """A pseudo-terminal pair in raw mode: `master_fd` for the boat side, `slave_path` is a
+    serial device the station opens like a real port. The slave stays open here so the
+    station can close and reopen it (reconnect) without destroying the pair."""
+
+    def __init__(self) -> None:
+        self.master_fd, self._slave_fd = os.openpty()
+        tty.setraw(self._slave_fd)
+        tty.setraw(self.master_fd)
+        os.set_blocking(self.master_fd, False)
+        self.slave_path = os.ttyname(self._slave_fd)
+
+    def master_stream(self, max_backlog: int = 4096) -> FdStream:
+        return FdStream(self.master_fd, max_backlog=max_backlog, owns_fd=False)
+
+    def close(self) -> None:
+        for fd in (self.master_fd, self._slave_fd):
+            with contextlib.suppress(OSError):
+                os.close(fd)
+
+
+class FdStream:
+    """A non-blocking file descriptor (a pty master) on the event loop.
+
+    Like a radio, it never blocks the writer: when the far side does not read and more
+    than `max_backlog` bytes wait, the oldest are dropped (counted in `dropped`)."""
+
+    def __init__(self, fd: int, *, max_backlog: int = 4096, owns_fd: bool = True) -> None:
+        self.fd = fd
+        self.max_backlog = max_backlog
+        self.owns_fd = owns_fd
+        self.dropped = 0
+        self._loop = asyncio.get_running_loop()
+        self._rx: asyncio.Queue[bytes] = asyncio.Queue()
+        self._tx = bytearray()
+        self._closed = False
+        os.set_blocking(fd, False)
+        self._loop.add_reader(fd, self._on_readable)
+
+    def _on_readable(self) -> None:
+        try:
+            data = os.read(self.fd, 65536)
+        except BlockingIOError:
+            return
+        except OSError:  # EIO: no process has the slave open; poll again shortly
+            self._loop.remove_reader(self.fd)
+            self._loop.call_later(0.05, self._rearm)
+            return
+        if data:
+            self._rx.put_nowait(data)
+
+    def _rearm(self) -> None:
+        if not self._closed:
+            self._loop.add_reader(self.fd, self._on_readable)
+
+    async def read(self) -> bytes:
+        if self._closed:
+            return b""
+        data = await self._rx.get()
+        return data
+
+    async def write(self, data: bytes) -> None:
+        if self._closed:
+            raise ConnectionError("closed")
+        self._tx += data
+        if len(self._tx) > self.max_backlog:
+            cut = len(self._tx) - self.max_backlog
+            self.dropped += cut
+            del self._tx[:cut]
+        self._flush()
+
+    def _flush(self) -> None:
+        while self._tx:
+            try:
+                n = os.write(self.fd, self._tx)
+            except BlockingIOError:
+                n = 0
+            except OSError:
+                self.dropped += len(self._tx)
+                self._tx.clear()
+                return
+            if n == 0:
+                self._loop.call_later(0.005, self._flush)
+                return
+            del self._tx[:n]
+
+    async def close(self) -> None:
+        if self._closed:
+            return
+        self._closed = True
+        self._loop.remove_reader(self.fd)
+        self._rx.put_nowait(b"")
+        if self.owns_fd:
+            with contextlib.suppress(OSError):
+                os.close(self.fd)
+
+
+class FaultInjectingStream:
+    """Wraps a ByteStream's writes like a radio link: drops whole frames with probability
+    `loss`, flips each bit with probability `ber`, and paces the bytes at `baud` (10 bits a
+    byte, as 8N1) through a transmit queue, so bandwidth and queueing are real.
+
+    `enabled = False` is the radio switched off: everything written is lost. Counters:
+    frames_sent, frames_dropped, bits_flipped, bytes_on_wire."""
+
+    def __init__(self, inner: ByteStream, *, loss: float = 0.0, ber: float = 0.0,
+                 baud: int | None = None, seed: int = 0) -> None:
+        if not 0 <= loss <= 1 or not 0 <= ber < 1:
+            raise ValueError(f"loss must be in [0, 1] and ber in [0, 1), got {loss}, {ber}")
+        self.inner = inner
+        self.loss, self.ber, self.baud = loss, ber, baud
+        self.enabled = True
+        self.rng = np.random.default_rng(seed)
+        self.frames_sent = self.frames_dropped = self.bits_flipped = self.bytes_on_wire = 0
+        self._queue: asyncio.Queue[bytes] = asyncio.Queue()
+        self._pump = asyncio.get_running_loop().create_task(self._send_paced())
+        self._line_free_at = 0.0
+
+    async def read(self) -> bytes:
+        return await self.inner.read()
+
+    async def write(self, data: bytes) -> None:
+        if not self.enabled:
+            return
+        out = bytearray()
+        for frame in data.split(b"\x00"):
+            if not frame:
+                continue
+            if self.loss and self.rng.random() < self.loss:
+                self.frames_dropped += 1
+                continue
+            self.frames_sent += 1
+            out += b"\x00" + frame + b"\x00"
+        if self.ber and out:
+            flips = self.rng.binomial(len(out) * 8, self.ber)
+            for pos in self.rng.integers(0, len(out) * 8, flips):
+                out[pos // 8] ^= 1 << (pos % 8)
+            self.bits_flipped += int(flips)
+        if out:
+            self._queue.put_nowait(bytes(out))
+
+    async def _send_paced(self) -> None:
+        loop = asyncio.get_running_loop()
+        chunk = 16
+        while True:
+            data = await self._queue.get()
+            for i in range(0, len(data), chunk):
+                piece = data[i : i + chunk]
+                if self.baud:
+                    now = loop.time()
+                    start = max(now, self._line_free_at)
+                    self._line_free_at = start + len(piece) * 10 / self.baud
+                    if start > now:
+                        await asyncio.sleep(start - now)
+                try:
+                    await self.inner.write(piece)
+                except ConnectionError:
+                    break
+                self.bytes_on_wire += len(piece)
+
+    async def close(self) -> None:
+        self._pump.cancel()
+        with contextlib.suppress(asyncio.CancelledError):
+            await self._pump
+        await self.inner.close()
+
+
+async def open_stream(url: str, baud: int = 57600) -> ByteStream:
+    """Open a serial device or pyserial URL as a ByteStream."""
+    return await SerialStream.open(url, baud)

@@ -1,0 +1,92 @@
+"""Run the simulated boat (BoatProtocol + a Vehicle) on a byte stream: `usv-station sim`."""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import time
+from collections.abc import Awaitable, Callable
+from dataclasses import dataclass
+
+from usvstation.geo import RampFrame
+from usvstation.link.transport import ByteStream, open_stream
+from usvstation.sim.boat import BoatConfig, BoatProtocol
+from usvstation.sim.sensors import GpsNoise
+from usvstation.sim.vehicle import KinematicVehicle, Vehicle
+
+
+@dataclass
+class SimulatedBoat:
+    """The boat protocol engine on the event loop, fed from a stream and the wall clock."""
+
+    boat: BoatProtocol
+    log: Callable[[str], None] | None = None
+
+    async def run(self, stream: ByteStream, stop: asyncio.Event | None = None) -> str:
+        """Serve until the stream closes (returns why) or `stop` is set."""
+        stop = stop or asyncio.Event()
+        reader = asyncio.get_running_loop().create_task(self._read(stream))
+        try:
+            while not reader.done() and not stop.is_set():
+                self.boat.update(time.monotonic())
+                await self._flush(stream)
+                await asyncio.sleep(
+                    min(max(self.boat.next_deadline() - time.monotonic(), 0.0005), 0.02))
+        finally:
+            reader.cancel()
+            with contextlib.suppress(asyncio.CancelledError, Exception):
+                await reader
+        return "stopped" if stop.is_set() else "stream closed"
+
+    async def _read(self, stream: ByteStream) -> None:
+        while True:
+            try:
+                data = await stream.read()
+            except (ConnectionError, OSError):
+                return
+            if not data:
+                return
+            self.boat.receive_data(data, time.monotonic())
+            await self._flush(stream)
+
+    async def _flush(self, stream: ByteStream) -> None:
+        if self.log is not None:
+            for line in self.boat.log:
+                self.log(line)
+        self.boat.log.clear()
+        data = self.boat.data_to_send()
+        if data:
+            with contextlib.suppress(ConnectionError, OSError):
+                await stream.write(data)
+
+
+def make_boat(frame: RampFrame, *, x: float = 85.0, y: float = 10.0, heading_deg: float = 180.0,
+              config: BoatConfig | None = None, seed: int = 0,
+              vehicle: Vehicle | None = None) -> BoatProtocol:
+    """A simulated boat at ramp-frame (x, y) with a KinematicVehicle unless one is given."""
+    import math
+
+    vehicle = vehicle or KinematicVehicle(x, y, math.radians(heading_deg))
+    return BoatProtocol(vehicle, frame, config or BoatConfig(), gps=GpsNoise(seed=seed),
+                        now=time.monotonic())
+
+
+async def serve_on_url(boat: BoatProtocol, url: str, baud: int, *,
+                       log: Callable[[str], None] = print, reconnect_s: float = 1.0,
+                       stop: asyncio.Event | None = None,
+                       opener: Callable[[str, int], Awaitable[ByteStream]] = open_stream) -> None:
+    """Serve on a serial device or URL, reopening it when it closes or fails to open."""
+    stop = stop or asyncio.Event()
+    sim = SimulatedBoat(boat, log)
+    while not stop.is_set():
+        try:
+            stream = await opener(url, baud)
+        except (OSError, ConnectionError) as exc:
+            log(f"cannot open {url}: {exc}; retrying")
+            await asyncio.sleep(reconnect_s)
+            continue
+        reason = await sim.run(stream, stop)
+        await stream.close()
+        if not stop.is_set():
+            log(f"{url}: {reason}; reopening")
+            await asyncio.sleep(reconnect_s)

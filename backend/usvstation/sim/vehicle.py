@@ -1,0 +1,216 @@
+"""The vehicle interface the simulated boat drives, and a kinematic vehicle implementing it.
+
+`Vehicle` is what sim/boat.py (the boat side of usv-link) needs from a boat model:
+the 3-DOF dynamic model with AV-LOS guidance (issue 3) plugs in behind the same
+interface. Everything is in one planar world frame (metres, the sim's ramp frame),
+headings in radians anticlockwise from +x, times in seconds of boat time.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, replace
+from itertools import pairwise
+from typing import Protocol, runtime_checkable
+
+import numpy as np
+
+
+@dataclass(frozen=True)
+class Waypoint:
+    """A mission waypoint in the world frame; position is linear in time between waypoints."""
+
+    x: float
+    y: float
+    t: float  # s after the mission start
+    speed: float  # m/s
+    heading: float  # rad, anticlockwise from +x (segment leaving the waypoint)
+
+
+@dataclass(frozen=True)
+class VehicleState:
+    """What the vehicle reports; the boat turns it into TELEMETRY."""
+
+    t: float = 0.0  # boat time, s
+    x: float = 0.0
+    y: float = 0.0
+    heading: float = 0.0  # rad, anticlockwise from +x
+    speed: float = 0.0  # speed over ground, m/s
+    course: float = 0.0  # course over ground, rad, anticlockwise from +x
+    yaw_rate: float = 0.0  # rad/s, anticlockwise positive
+    thrust_left: float = 0.0  # -1..1 of full thrust
+    thrust_right: float = 0.0
+    waypoint_index: int = 0  # waypoint being steered to
+    cross_track_error: float = 0.0  # m, positive right of the track
+    mission_complete: bool = False
+
+
+@runtime_checkable
+class Vehicle(Protocol):
+    """A boat model the simulated boat can drive (sim/boat.py)."""
+
+    @property
+    def state(self) -> VehicleState: ...
+
+    def step(self, dt: float) -> None:
+        """Advance boat time by dt seconds."""
+
+    def set_mission(self, waypoints: Sequence[Waypoint]) -> None:
+        """Replace the mission (not started: the vehicle keeps station until start())."""
+
+    def start(self) -> None:
+        """Begin the mission from its first waypoint."""
+
+    def hold(self) -> None:
+        """Keep station where the vehicle is; the mission clock stops."""
+
+    def resume(self) -> None:
+        """Continue the mission after hold()."""
+
+    def abort(self) -> None:
+        """Stop the thrusters and drop the mission."""
+
+    def set_guidance(self, heading: float, speed: float) -> None:
+        """Shore-assisted mode: steer `heading` (rad) at `speed` (m/s) until clear_guidance()."""
+
+    def clear_guidance(self) -> None:
+        """Leave shore-assisted mode and rejoin the mission."""
+
+
+def _wrap(a: float) -> float:
+    return (a + math.pi) % (2 * math.pi) - math.pi
+
+
+class KinematicVehicle:
+    """A kinematic stand-in for the dynamic model: follows the active mission exactly, with
+    position linear in time between waypoints (DESIGN.md "Plan output", paper 000 eq. 9).
+
+    Off the track (before start, after guidance) it first goes straight back to the
+    mission's reference point at `rejoin_speed`, then follows the mission clock again.
+    Thrust is a plausible derived figure (speed share plus a turn differential), not a model.
+    """
+
+    def __init__(self, x: float = 0.0, y: float = 0.0, heading: float = 0.0, *,
+                 speed_max: float = 3.0, rejoin_speed: float = 1.0) -> None:
+        self._state = VehicleState(x=x, y=y, heading=heading, course=heading)
+        self.speed_max = speed_max
+        self.rejoin_speed = rejoin_speed
+        self._wps: list[Waypoint] = []
+        self._tau = 0.0  # mission clock, s
+        self._phase = "idle"  # idle | track | rejoin | hold | guided | done | stopped
+        self._guidance = (0.0, 0.0)
+
+    @property
+    def state(self) -> VehicleState:
+        return self._state
+
+    @property
+    def phase(self) -> str:
+        return self._phase
+
+    def set_mission(self, waypoints: Sequence[Waypoint]) -> None:
+        wps = list(waypoints)
+        if not wps or any(b.t <= a.t for a, b in pairwise(wps)):
+            raise ValueError("a mission needs waypoints with increasing times")
+        self._wps = wps
+        self._tau = wps[0].t
+        self._phase = "idle"
+        self._state = replace(self._state, waypoint_index=0, mission_complete=False)
+
+    def start(self) -> None:
+        if not self._wps:
+            raise ValueError("no mission to start")
+        self._tau = self._wps[0].t
+        self._phase = "rejoin"
+        self._state = replace(self._state, mission_complete=False)
+
+    def hold(self) -> None:
+        if self._phase in ("track", "rejoin", "guided"):
+            self._phase = "hold"
+
+    def resume(self) -> None:
+        if self._phase == "hold":
+            self._phase = "rejoin"
+
+    def abort(self) -> None:
+        self._wps = []
+        self._phase = "stopped"
+
+    def set_guidance(self, heading: float, speed: float) -> None:
+        if self._phase in ("track", "rejoin", "guided"):
+            self._guidance = (heading, max(0.0, min(speed, self.speed_max)))
+            self._phase = "guided"
+
+    def clear_guidance(self) -> None:
+        if self._phase == "guided":
+            self._phase = "rejoin"
+
+    # ---- motion
+
+    def reference(self, tau: float) -> tuple[float, float, int]:
+        """Mission position at mission time tau, and the index of the waypoint ahead."""
+        wps = self._wps
+        ts = [w.t for w in wps]
+        if tau <= ts[0]:
+            return wps[0].x, wps[0].y, 0
+        if tau >= ts[-1]:
+            return wps[-1].x, wps[-1].y, len(wps) - 1
+        i = int(np.searchsorted(ts, tau, side="right"))
+        a, b = wps[i - 1], wps[i]
+        f = (tau - a.t) / (b.t - a.t)
+        return a.x + f * (b.x - a.x), a.y + f * (b.y - a.y), i
+
+    def _cross_track(self, x: float, y: float, i: int) -> float:
+        if i == 0 or len(self._wps) < 2:
+            return 0.0
+        a, b = self._wps[i - 1], self._wps[i]
+        dx, dy = b.x - a.x, b.y - a.y
+        length = math.hypot(dx, dy)
+        if length < 1e-9:
+            return 0.0
+        return (dy * (x - a.x) - dx * (y - a.y)) / length  # positive right of the track
+
+    def step(self, dt: float) -> None:
+        if dt <= 0:
+            return
+        s = self._state
+        x, y, heading, speed = s.x, s.y, s.heading, 0.0
+        index, complete = s.waypoint_index, s.mission_complete
+        if self._phase == "track":
+            self._tau += dt
+            x, y, index = self.reference(self._tau)
+            speed = math.hypot(x - s.x, y - s.y) / dt
+            if speed > 1e-6:
+                heading = math.atan2(y - s.y, x - s.x)
+            if self._tau >= self._wps[-1].t:
+                self._phase, complete, speed = "done", True, 0.0
+        elif self._phase == "rejoin":
+            rx, ry, index = self.reference(self._tau)
+            dist = math.hypot(rx - x, ry - y)
+            v = max(self.rejoin_speed, self._wps[max(index - 1, 0)].speed)
+            if dist <= v * dt:
+                x, y = rx, ry
+                self._phase = "track"
+                speed = dist / dt
+            else:
+                heading = math.atan2(ry - y, rx - x)
+                x += v * dt * math.cos(heading)
+                y += v * dt * math.sin(heading)
+                speed = v
+        elif self._phase == "guided":
+            heading, speed = self._guidance
+            x += speed * dt * math.cos(heading)
+            y += speed * dt * math.sin(heading)
+        course = math.atan2(y - s.y, x - s.x) if speed > 1e-6 else s.course
+        yaw_rate = _wrap(heading - s.heading) / dt
+        share = speed / self.speed_max
+        diff = max(-0.5, min(0.5, yaw_rate))  # turn anticlockwise: right thruster harder
+        left = max(-1.0, min(1.0, share - diff)) if speed > 0 else 0.0
+        right = max(-1.0, min(1.0, share + diff)) if speed > 0 else 0.0
+        xte = self._cross_track(x, y, index) if self._wps else 0.0
+        self._state = VehicleState(
+            t=s.t + dt, x=x, y=y, heading=heading, speed=speed, course=course,
+            yaw_rate=yaw_rate, thrust_left=left, thrust_right=right, waypoint_index=index,
+            cross_track_error=xte, mission_complete=complete,
+        )

@@ -1,0 +1,43 @@
+"""Plan waypoints <-> wire mission items: round trip, rounding bounds, refusals."""
+
+from __future__ import annotations
+
+import math
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from usvstation.geo import RampFrame
+from usvstation.link.mission import mission_from_plan, plan_from_mission
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    st.floats(-60, 60), st.floats(-179, 179), st.floats(0, 359.99),
+    st.lists(st.tuples(st.floats(-500, 500), st.floats(-500, 500), st.floats(0, 5),
+                       st.floats(0, 359.99)), min_size=1, max_size=40),
+)
+def test_plan_round_trips_within_wire_resolution(lat, lon, bearing, rows):
+    frame = RampFrame(lat, lon, bearing)
+    wps = [{"x": x, "y": y, "t": 2.5 * i, "speed": v, "heading_deg": h}
+           for i, (x, y, v, h) in enumerate(rows)]
+    mission = mission_from_plan(wps, frame, 42)
+    assert [it.index for it in mission.items] == list(range(len(wps)))
+    back = plan_from_mission(mission, frame)
+    for a, b in zip(wps, back, strict=True):
+        # 1e-7 deg is 1.1 cm of latitude; less for longitude
+        assert math.hypot(a["x"] - b["x"], a["y"] - b["y"]) < 0.02
+        assert abs(a["t"] - b["t"]) <= 0.0005 and abs(a["speed"] - b["speed"]) <= 0.005
+        dh = (a["heading_deg"] - b["heading_deg"] + 180) % 360 - 180
+        assert abs(dh) <= 0.006
+    assert mission.begin().mission_crc == mission.end().mission_crc == mission.crc
+
+
+def test_origin_and_heading_convention_on_the_wire():
+    frame = RampFrame(30.5135, 114.4182, 90.0)  # +x points east
+    wps = [{"x": 10.0, "y": 0.0, "t": 0.0, "speed": 1.0, "heading_deg": 180.0}]
+    mission = mission_from_plan(wps, frame, 1)
+    it = mission.items[0]
+    assert mission.origin.as_tuple() == (305135000, 1144182000, 9000)
+    assert it.lat_e7 == 305135000 and it.lon_e7 > 1144182000  # 10 m east
+    assert it.heading_cdeg == 27000  # ramp heading 180 = towards the ramp = compass west
