@@ -69,9 +69,10 @@ def build_parser() -> argparse.ArgumentParser:
     sim = sub.add_parser(
         "sim", help="run the simulated boat on a serial port",
         description=(
-            "Run the simulated boat (the boat side of the usv-link protocol with a kinematic "
-            "vehicle) on a serial device or pyserial URL; --link pty creates a pseudo-terminal "
-            "and prints the device path for the station to open."
+            "Run the simulated boat (the boat side of the usv-link protocol driving the 3-DOF "
+            "vessel model with compensated AV-LOS guidance) on a serial device or pyserial URL; "
+            "--link pty creates a pseudo-terminal and prints the device path for the station "
+            "to open."
         ),
     )
     sim.add_argument("--link", required=True,
@@ -86,6 +87,11 @@ def build_parser() -> argparse.ArgumentParser:
     sim.add_argument("--scenario", default="case1",
                      help="scenario giving the origin and start pose (default case1)")
     sim.add_argument("--seed", type=int, default=0, help="GPS noise seed")
+    sim.add_argument("--vehicle", choices=["dynamic", "kinematic"], default="dynamic",
+                     help="dynamic: 3-DOF Otter model with AV-LOS (default); kinematic: follows "
+                     "the mission exactly")
+    sim.add_argument("--sea-state", type=int, default=0, choices=range(0, 7), metavar="0-6",
+                     help="waves of this sea state running with the scenario's wind (default 0)")
     sim.add_argument("--duration", type=float, default=None,
                      help="stop after this many seconds (default: run until interrupted)")
 

@@ -10,7 +10,7 @@ import sys
 from usvstation.geo import RampFrame
 from usvstation.link.transport import PtyPair
 from usvstation.sim.boat import BoatConfig
-from usvstation.sim.runner import SimulatedBoat, make_boat, serve_on_url
+from usvstation.sim.runner import SimulatedBoat, make_boat, make_vehicle, serve_on_url
 
 
 def _say(text: str) -> None:
@@ -31,14 +31,14 @@ async def run_sim(args: argparse.Namespace) -> int:
     frame = RampFrame(origin.lat, origin.lon, origin.ramp_bearing_deg)
     config = BoatConfig(telemetry_hz=args.telemetry_hz, failsafe_timeout_s=args.failsafe_s,
                         sim_speed=args.sim_speed)
-    boat = make_boat(frame, x=scenario.start.x, y=scenario.start.y,
-                     heading_deg=scenario.start.heading_deg, config=config, seed=args.seed)
+    vehicle = make_vehicle(args.vehicle, scenario, args.sea_state)
+    boat = make_boat(frame, config=config, seed=args.seed, vehicle=vehicle)
     stop = asyncio.Event()
     if args.duration is not None:
         asyncio.get_running_loop().call_later(args.duration, stop.set)
-    detail = (f"{args.baud} baud, sim speed {args.sim_speed:g}, telemetry {args.telemetry_hz:g} Hz,"
-              f" failsafe {args.failsafe_s:g} s, start ({scenario.start.x:g}, "
-              f"{scenario.start.y:g}) of {scenario.name}")
+    detail = (f"{args.vehicle} vehicle, {args.baud} baud, sim speed {args.sim_speed:g}, "
+              f"telemetry {args.telemetry_hz:g} Hz, failsafe {args.failsafe_s:g} s, "
+              f"start ({scenario.start.x:g}, {scenario.start.y:g}) of {scenario.name}")
     if args.link == "pty":
         pair = PtyPair()
         _say(f"boat on {pair.slave_path} ({detail})")

@@ -4,15 +4,43 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
+import math
 import time
 from collections.abc import Awaitable, Callable
 from dataclasses import dataclass
 
 from usvstation.geo import RampFrame
 from usvstation.link.transport import ByteStream, open_stream
+from usvstation.scenario import Scenario
 from usvstation.sim.boat import BoatConfig, BoatProtocol
 from usvstation.sim.sensors import GpsNoise
 from usvstation.sim.vehicle import KinematicVehicle, Vehicle
+
+VEHICLES = ("dynamic", "kinematic")
+
+
+def make_vehicle(kind: str, scenario: Scenario, sea_state: int = 0) -> Vehicle:
+    """The simulated vehicle at the scenario's start pose.
+
+    'dynamic' (default): the 3-DOF Otter with compensated AV-LOS in the
+    scenario's current and wind, plus waves of `sea_state` (0: none).
+    'kinematic': follows the mission exactly (for protocol tests).
+    """
+    start = scenario.start
+    heading = math.radians(start.heading_deg)
+    if kind == "kinematic":
+        return KinematicVehicle(start.x, start.y, heading)
+    if kind != "dynamic":
+        raise ValueError(f"vehicle: unknown kind {kind!r}; available: {', '.join(VEHICLES)}")
+    from usvstation.dynamics import Environment, WaveField
+    from usvstation.sim.dynamic import DynamicVehicle
+
+    env = scenario.environment
+    waves = WaveField.from_sea_state(sea_state, math.radians(env.wind_dir_deg)) \
+        if sea_state > 0 else None
+    return DynamicVehicle(start.x, start.y, heading, speed=start.speed,
+                          env=Environment.from_scenario(env, waves=waves),
+                          accel=scenario.vessel.accel_max)
 
 
 @dataclass
@@ -64,8 +92,6 @@ def make_boat(frame: RampFrame, *, x: float = 85.0, y: float = 10.0, heading_deg
               config: BoatConfig | None = None, seed: int = 0,
               vehicle: Vehicle | None = None) -> BoatProtocol:
     """A simulated boat at ramp-frame (x, y) with a KinematicVehicle unless one is given."""
-    import math
-
     vehicle = vehicle or KinematicVehicle(x, y, math.radians(heading_deg))
     return BoatProtocol(vehicle, frame, config or BoatConfig(), gps=GpsNoise(seed=seed),
                         now=time.monotonic())
