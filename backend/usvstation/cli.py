@@ -66,6 +66,24 @@ def build_parser() -> argparse.ArgumentParser:
         metavar="KEY=VALUE", help="override a planner option, e.g. --set population=120",
     )
 
+    serve = sub.add_parser(
+        "serve", help="run the station: API, console, live telemetry, boat link",
+        description=(
+            "Start the station. --link sim (default) attaches a simulated boat through a "
+            "pseudo-terminal; a device (/dev/ttyUSB0) or pyserial URL (socket://host:port) "
+            "attaches a real one. Every option can also be set as USV_STATION_<NAME>."
+        ),
+    )
+    serve.add_argument("--host", help="address to bind (default 127.0.0.1)")
+    serve.add_argument("--port", type=int, help="HTTP port (default 8000)")
+    serve.add_argument("--link", help="'sim' (default), a serial device or a pyserial URL")
+    serve.add_argument("--baud", type=int, help="serial baud rate (default 57600)")
+    serve.add_argument("--data-dir", type=Path, help="database and token folder (default ./data)")
+    serve.add_argument("--token", help="access token (default: generated into the data dir)")
+    serve.add_argument("--viser-port", type=int, help="3D view port (default 8080)")
+    serve.add_argument("--sim-speed", type=float,
+                       help="simulated boat time runs this many times faster (default 1)")
+
     sim = sub.add_parser(
         "sim", help="run the simulated boat on a serial port",
         description=(
@@ -113,6 +131,8 @@ def main(argv: list[str] | None = None) -> int:
     tune_allocator()
     args = build_parser().parse_args(argv)
     try:
+        if args.command == "serve":
+            return _cmd_serve(args)
         if args.command == "plan":
             return _cmd_plan(args)
         if args.command == "bench":
@@ -178,6 +198,27 @@ def format_plan(plan: dict[str, Any]) -> str:
             f"{w['heading_deg']:>14.1f}"
         )
     return "\n".join(lines)
+
+
+def _cmd_serve(args: argparse.Namespace) -> int:
+    from pydantic import ValidationError
+
+    from usvstation.config import ExposureError, Settings
+    from usvstation.scenario import format_validation_error
+
+    flags = {k: getattr(args, k) for k in ("host", "port", "link", "baud", "data_dir", "token",
+                                           "viser_port", "sim_speed")
+             if getattr(args, k) is not None}
+    try:
+        settings = Settings(**flags)
+    except ValidationError as exc:
+        raise CliError(f"invalid setting: {format_validation_error(exc)}", EXIT_INVALID) from None
+    try:
+        from usvstation.server import serve
+
+        return serve(settings, announce=lambda msg: print(msg, flush=True))
+    except ExposureError as exc:
+        raise CliError(str(exc), EXIT_INVALID) from None
 
 
 def _cmd_sim(args: argparse.Namespace) -> int:

@@ -8,6 +8,7 @@ from typing import Any
 
 from usvstation.config import Settings, resolve_token
 from usvstation.scenario import Scenario, bundled_scenario_dir, parse_scenario
+from usvstation.services.boat import BoatService
 from usvstation.services.hub import LiveHub
 from usvstation.services.plans import PlanService
 from usvstation.store.db import Store
@@ -24,12 +25,16 @@ class Station:
         self.store = Store(settings.data_dir)
         self.hub = LiveHub()
         self.plans = PlanService(self.store, self.hub, settings.plan_workers)
+        self.boat = BoatService(settings, self.store, self.hub, self.plans)
 
     async def start(self) -> None:
         self.store.start()
         await self.plans.start()
+        await self.boat.start(await self.working_scenario())
 
     async def stop(self) -> None:
+        """Close the link, stop plan workers, flush telemetry; the boat is sent nothing."""
+        await self.boat.stop()
         await self.plans.stop()
         await asyncio.to_thread(self.store.close)
 
@@ -54,4 +59,5 @@ class Station:
             "plans": {s: sum(1 for j in self.plans.jobs.values() if j["status"] == s)
                       for s in ("queued", "running")},
             "websocket_clients": len(self.hub.subscribers),
+            "link_up": self.boat.link_up,
         }

@@ -17,6 +17,7 @@ from pydantic import BaseModel, ConfigDict, Field
 from usvstation import __version__
 from usvstation.api.auth import require_token
 from usvstation.scenario import Scenario
+from usvstation.services.boat import BoatError
 from usvstation.services.export import FORMATS, export_chunks, planned_route
 from usvstation.station import Station
 
@@ -35,6 +36,20 @@ class PlanRequest(BaseModel):
 class Accepted(BaseModel):
     id: str
     status: str
+
+
+class MissionRequest(BaseModel):
+    """Upload a finished plan to the boat."""
+
+    model_config = ConfigDict(extra="forbid")
+    plan_id: str = Field(min_length=1, max_length=64)
+
+
+class CommandRequest(BaseModel):
+    """A boat command; START needs a verified mission, ABORT stops the propellers."""
+
+    model_config = ConfigDict(extra="forbid")
+    command: Literal["start", "hold", "resume", "abort"]
 
 
 def _utc(value: dt.datetime | None) -> str | None:
@@ -97,6 +112,40 @@ def create_app(station: Station) -> FastAPI:
         return {k: job[k] for k in ("id", "status", "plan", "error", "created_at", "planner",
                                     "seed", "scenario")}
 
+    @app.post("/api/missions", status_code=202, tags=["boat"], dependencies=Auth,
+              responses={409: {"description": "plan not done, no origin, or a mission running"},
+                         503: {"description": "the boat link is down"}})
+    async def post_mission(req: MissionRequest) -> dict[str, Any]:
+        try:
+            return await station.boat.create_mission(req.plan_id)
+        except BoatError as exc:
+            raise HTTPException(exc.status, detail=str(exc)) from None
+
+    @app.get("/api/missions", tags=["boat"])
+    async def list_missions() -> list[dict[str, Any]]:
+        return [station.boat.get_mission(k) for k in station.boat.missions]
+
+    @app.get("/api/missions/{mission_id}", tags=["boat"])
+    async def get_mission(mission_id: str) -> dict[str, Any]:
+        mission = station.boat.get_mission(mission_id)
+        if mission is None:
+            raise HTTPException(404, detail=f"no mission {mission_id!r}")
+        return mission
+
+    @app.post("/api/boat/command", tags=["boat"], dependencies=Auth,
+              responses={409: {"description": "no verified mission, or the boat refused"},
+                         503: {"description": "the boat link is down"},
+                         504: {"description": "the boat did not acknowledge in time"}})
+    async def boat_command(req: CommandRequest) -> dict[str, Any]:
+        try:
+            return await station.boat.command(req.command)
+        except BoatError as exc:
+            raise HTTPException(exc.status, detail=str(exc)) from None
+
+    @app.get("/api/boat", tags=["boat"])
+    async def boat() -> dict[str, Any]:
+        return station.boat.snapshot()
+
     @app.get("/api/runs", tags=["telemetry"])
     async def list_runs() -> list[dict[str, Any]]:
         return await asyncio.to_thread(station.store.runs)
@@ -134,7 +183,8 @@ def create_app(station: Station) -> FastAPI:
         await ws.accept()
         sub = station.hub.subscribe()
         try:
-            await ws.send_json({"type": "hello", "data": {"version": __version__}})
+            await ws.send_json({"type": "hello",
+                                "data": {"version": __version__, **station.boat.snapshot()}})
             sender = asyncio.create_task(_pump(ws, sub))
             receiver = asyncio.create_task(_drain(ws))
             _, pending = await asyncio.wait({sender, receiver},

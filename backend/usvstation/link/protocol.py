@@ -84,6 +84,7 @@ class UploadProgress:
     mission_id: int
     acked: int
     count: int
+    sent: int = 0  # distinct items sent at least once
 
 
 @dataclass(frozen=True)
@@ -144,6 +145,10 @@ class MissionUploader:
     def done(self) -> bool:
         return self.result is not None
 
+    @property
+    def items_sent(self) -> int:
+        return sum(1 for key in self.attempts if isinstance(key, int))
+
     def start(self, now: float) -> list[Any]:
         return self._send("begin", now)
 
@@ -196,16 +201,18 @@ class MissionUploader:
         if stage == m.MissionStage.BEGIN and self.phase == "begin":
             self.deadlines.pop("begin", None)
             self.phase = "items"
-            return self._fill_window(now), [UploadProgress(self.mission.mission_id, 0,
-                                                           self.mission.count)]
+            out = self._fill_window(now)
+            return out, [UploadProgress(self.mission.mission_id, 0, self.mission.count,
+                                        self.items_sent)]
         if stage == m.MissionStage.ITEM and msg.index < self.mission.count:
             self.deadlines.pop(msg.index, None)
             if msg.index in self.acked or self.phase != "items":
                 return self._fill_window(now), []
             self.acked.add(msg.index)
+            out = self._fill_window(now)
             progress = UploadProgress(self.mission.mission_id, len(self.acked),
-                                      self.mission.count)
-            return self._fill_window(now), [progress]
+                                      self.mission.count, self.items_sent)
+            return out, [progress]
         if stage == m.MissionStage.END and self.phase == "end":
             self._finish(True, "activated", now)
             return [], [self.result]

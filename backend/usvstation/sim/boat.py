@@ -30,7 +30,7 @@ STAGE = m.MissionStage
 
 @dataclass(frozen=True)
 class BoatConfig:
-    telemetry_hz: float = 5.0  # 0 < hz <= 50
+    telemetry_hz: float = 5.0  # 0 < hz <= 50, frames per second of boat time
     failsafe_timeout_s: float = m.LINK_TIMEOUT_MS / 1000
     heartbeat_period_s: float = m.HEARTBEAT_PERIOD_MS / 1000
     sim_speed: float = 1.0  # boat seconds per link-clock second
@@ -354,10 +354,16 @@ class BoatProtocol:
                                  f"{self.cfg.failsafe_timeout_s:.1f} s")
         if now >= self.next_telemetry:
             self._send(self.telemetry())
-            period = 1.0 / self.cfg.telemetry_hz
+            period = self.telemetry_period
             self.next_telemetry = max(self.next_telemetry + period, now - period)
         if now >= self.next_heartbeat:
             self._report_state(now)
+
+    @property
+    def telemetry_period(self) -> float:
+        """Link-clock seconds between TELEMETRY frames: `telemetry_hz` per second of boat
+        time (so a faster sim sends faster), at most 50 frames per second on the link."""
+        return max(1.0 / (self.cfg.telemetry_hz * self.cfg.sim_speed), 1.0 / 50.0)
 
     def _link_lost(self, now: float, reason: str) -> None:
         """Failsafe: hold station when running, and report it."""

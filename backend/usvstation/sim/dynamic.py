@@ -12,7 +12,8 @@ speeds up to make up lost ground). Holding first lets the boat coast to
 rest (below 0.3 m/s), then keeps station there: it steers back at low speed
 when it drifts more than 3 m from where it stopped. The
 mission is complete when the boat passes the last waypoint (for a recovery:
-reaches the ramp end); it then stops its propellers.
+reaches the ramp end); it then stops its propellers and, on a recovery ramp,
+is held there (the model stops moving; boat time goes on).
 """
 
 from __future__ import annotations
@@ -66,6 +67,7 @@ class DynamicVehicle:
         self._thrust = ThrustCommand(0.0, 0.0)
         self._segment = 0
         self._complete = False
+        self._idle_time = 0.0  # boat time spent held on the ramp (the model is frozen)
         self._state = self._report()
 
     # --- Vehicle interface --------------------------------------------------------
@@ -137,6 +139,10 @@ class DynamicVehicle:
             self._phase = "done"
 
     def _control_step(self) -> None:
+        if self._phase == "done":  # recovered: the ramp holds the boat
+            self._thrust = ThrustCommand(0.0, 0.0)
+            self._idle_time += CONTROL_PERIOD
+            return
         s = self.vessel.state
         command = self._steer(s)
         if command is None:
@@ -187,9 +193,12 @@ class DynamicVehicle:
         speed = math.hypot(vx, vy)
         full = self.params.thrusters.thrust_max
         index = min(self._segment + 1, max(len(self._wps) - 1, 0))
+        if self._phase == "done":
+            vx = vy = speed = 0.0
         return VehicleState(
-            t=s.t, x=s.x, y=s.y, heading=s.psi, speed=speed,
-            course=math.atan2(vy, vx) if speed > 1e-6 else s.psi, yaw_rate=s.r,
+            t=s.t + self._idle_time, x=s.x, y=s.y, heading=s.psi, speed=speed,
+            course=math.atan2(vy, vx) if speed > 1e-6 else s.psi,
+            yaw_rate=0.0 if self._phase == "done" else s.r,
             thrust_left=max(-1.0, min(1.0, self._thrust.left / full)),
             thrust_right=max(-1.0, min(1.0, self._thrust.right / full)),
             waypoint_index=index, cross_track_error=self._cross_track(s.x, s.y, index),

@@ -54,12 +54,15 @@ CREATE TABLE IF NOT EXISTS plans (
 CREATE TABLE IF NOT EXISTS missions (
     id TEXT PRIMARY KEY,
     plan_id TEXT NOT NULL REFERENCES plans(id),
+    wire_id INTEGER NOT NULL,
     created_at TEXT NOT NULL,
     state TEXT NOT NULL,
     sent INTEGER NOT NULL DEFAULT 0,
     acked INTEGER NOT NULL DEFAULT 0,
     total INTEGER NOT NULL,
     error TEXT,
+    run INTEGER,
+    origin TEXT NOT NULL,
     items TEXT NOT NULL
 );
 CREATE TABLE IF NOT EXISTS settings (
@@ -201,6 +204,12 @@ class Store:
             c.execute("UPDATE runs SET ended_at = ?, state = ? WHERE id = ?",
                       (utc_now(), state, run))
 
+    def close_stale_runs(self) -> None:
+        """Runs left active by a previous station process end as 'interrupted'."""
+        with self.conn as c:
+            c.execute("UPDATE runs SET ended_at = ?, state = 'interrupted' WHERE state = 'active'",
+                      (utc_now(),))
+
     def runs(self) -> list[dict[str, Any]]:
         rows = self.conn.execute(
             "SELECT r.*, (SELECT COUNT(*) FROM telemetry t WHERE t.run = r.id) AS points "
@@ -270,11 +279,12 @@ class Store:
     def save_mission(self, m: dict[str, Any]) -> None:
         with self.conn as c:
             c.execute(
-                "INSERT OR REPLACE INTO missions (id, plan_id, created_at, state, sent, acked, "
-                "total, error, items) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
-                (m["id"], m["plan_id"], m["created_at"], m["state"], m["progress"]["sent"],
-                 m["progress"]["acked"], m["progress"]["total"], m.get("error"),
-                 json.dumps(m["items"])),
+                "INSERT OR REPLACE INTO missions (id, plan_id, wire_id, created_at, state, sent, "
+                "acked, total, error, run, origin, items) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
+                "?, ?)",
+                (m["id"], m["plan_id"], m["wire_id"], m["created_at"], m["state"],
+                 m["progress"]["sent"], m["progress"]["acked"], m["progress"]["total"],
+                 m.get("error"), m.get("run"), json.dumps(m["origin"]), json.dumps(m["items"])),
             )
 
     def missions(self) -> list[dict[str, Any]]:
@@ -283,6 +293,7 @@ class Store:
         for r in rows:
             d = dict(r)
             d["items"] = json.loads(d["items"])
+            d["origin"] = json.loads(d["origin"])
             d["progress"] = {"sent": d.pop("sent"), "acked": d.pop("acked"),
                              "total": d.pop("total")}
             out.append(d)
