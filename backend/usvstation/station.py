@@ -12,6 +12,7 @@ from usvstation.services.boat import BoatService
 from usvstation.services.hub import LiveHub
 from usvstation.services.plans import PlanService
 from usvstation.store.db import Store
+from usvstation.viz.view import ThreeDView
 
 DEFAULT_SCENARIO = "case1"
 
@@ -25,16 +26,21 @@ class Station:
         self.store = Store(settings.data_dir)
         self.hub = LiveHub()
         self.plans = PlanService(self.store, self.hub, settings.plan_workers)
-        self.boat = BoatService(settings, self.store, self.hub, self.plans)
+        self.view = ThreeDView(settings.host, settings.viser_port)
+        self.boat = BoatService(settings, self.store, self.hub, self.plans, self.view)
 
     async def start(self) -> None:
         self.store.start()
         await self.plans.start()
-        await self.boat.start(await self.working_scenario())
+        scenario = await self.working_scenario()
+        await asyncio.to_thread(self.view.start)
+        self.view.show_scenario(scenario)
+        await self.boat.start(scenario)
 
     async def stop(self) -> None:
         """Close the link, stop plan workers, flush telemetry; the boat is sent nothing."""
         await self.boat.stop()
+        await asyncio.to_thread(self.view.stop)
         await self.plans.stop()
         await asyncio.to_thread(self.store.close)
 
@@ -48,6 +54,7 @@ class Station:
     async def set_working_scenario(self, scenario: Scenario) -> None:
         await asyncio.to_thread(self.store.set_setting, "scenario",
                                 scenario.model_dump(mode="json"))
+        self.view.show_scenario(scenario)
         self.hub.publish("scenario", {"name": scenario.name})
 
     def health(self) -> dict[str, Any]:
@@ -60,4 +67,5 @@ class Station:
                       for s in ("queued", "running")},
             "websocket_clients": len(self.hub.subscribers),
             "link_up": self.boat.link_up,
+            "viser_port": self.view.port,
         }

@@ -37,6 +37,7 @@ from usvstation.scenario import Scenario
 from usvstation.services.hub import LiveHub
 from usvstation.services.plans import PlanService
 from usvstation.store.db import Store, utc_now
+from usvstation.viz.view import ThreeDView
 
 MISSION_STATES = ("uploading", "verified", "active", "completed", "failed", "aborted")
 STATUS_KEPT = 50
@@ -98,8 +99,11 @@ class EmbeddedSim:
 class BoatService:
     """Owns the BoatLink; turns its events into stored telemetry, missions and live events."""
 
-    def __init__(self, settings: Settings, store: Store, hub: LiveHub, plans: PlanService) -> None:
+    def __init__(self, settings: Settings, store: Store, hub: LiveHub, plans: PlanService,
+                 view: ThreeDView | None = None) -> None:
         self.settings, self.store, self.hub, self.plans = settings, store, hub, plans
+        self.view = view
+        self._run_t0: float | None = None  # boat time of the run's first telemetry
         self.link: BoatLink | None = None
         self.sim: EmbeddedSim | None = None
         self.device = settings.link
@@ -292,12 +296,19 @@ class BoatService:
         self.frame = RampFrame(origin["lat"], origin["lon"], origin["ramp_bearing_deg"])
         mission.update(state="active", run=self.run, seen_running=False)
         self.active = mission
+        self._run_t0 = None
+        job = self.plans.get(mission["plan_id"])
+        if self.view is not None and job and job.get("plan"):
+            self.view.show_plan(job["plan"])
+            self.view.clear_track()
         await self._save(mission)
         self.hub.publish("run", {"id": self.run, "mission": mission["id"], "state": "active"})
 
     async def _end_run(self, state: str) -> None:
+        """Close the run; its telemetry is committed before anyone hears it ended."""
         mission, run = self.active, self.run
         self.active, self.run = None, None
+        await asyncio.to_thread(self.store.writer.flush)
         if mission is not None:
             mission["state"] = state
             await self._save(mission)
@@ -331,6 +342,10 @@ class BoatService:
         self.store.writer.put(row)
         self.telemetry, self.telemetry_at = row, time.monotonic()
         self.hub.publish("telemetry", row)
+        if self.view is not None and self.run is not None and row["x"] is not None:
+            if self._run_t0 is None:
+                self._run_t0 = row["boat_time"]
+            self.view.add_track_point(row["x"], row["y"], row["boat_time"] - self._run_t0)
         self._check_finished(t.state, None)
 
     def _check_finished(self, state: int, wire_id: int | None) -> None:

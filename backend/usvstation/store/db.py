@@ -109,7 +109,7 @@ class TelemetryWriter:
 
     def __init__(self, path: Path, commit_interval_s: float = 0.2, batch_max: int = 2000) -> None:
         self.path, self.interval, self.batch_max = path, commit_interval_s, batch_max
-        self._queue: queue.SimpleQueue[tuple | None] = queue.SimpleQueue()
+        self._queue: queue.SimpleQueue[tuple | threading.Event | None] = queue.SimpleQueue()
         self._thread = threading.Thread(target=self._run, name="telemetry-writer", daemon=True)
         self._flushed = threading.Event()
         self.stats = WriterStats()
@@ -122,6 +122,14 @@ class TelemetryWriter:
         """Queue one telemetry row (keys of TELEMETRY_COLUMNS); never blocks."""
         self.stats.received += 1
         self._queue.put(tuple(row.get(c) for c in TELEMETRY_COLUMNS))
+
+    def flush(self, timeout: float = 5.0) -> bool:
+        """Block until every row queued so far is committed; False on timeout."""
+        if not self._thread.is_alive():
+            return False
+        done = threading.Event()
+        self._queue.put(done)
+        return done.wait(timeout)
 
     def close(self, timeout: float = 5.0) -> None:
         """Commit what is queued and stop the thread."""
@@ -143,6 +151,11 @@ class TelemetryWriter:
                 if item is None:
                     self._commit(conn, pending)
                     return
+                if isinstance(item, threading.Event):
+                    self._commit(conn, pending)
+                    pending, deadline = [], None
+                    item.set()
+                    continue
                 if item:
                     pending.append(item)
                     if deadline is None:

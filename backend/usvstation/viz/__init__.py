@@ -1,0 +1,1 @@
+"""The 3D (x, y, t) view served by viser."""

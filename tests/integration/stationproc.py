@@ -1,0 +1,64 @@
+"""`usv-station serve` as a real subprocess on ephemeral ports, for end-to-end tests."""
+
+from __future__ import annotations
+
+import os
+import re
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import httpx
+
+SCRIPT = Path(sys.executable).parent / "usv-station"
+TOKEN = "e2e-token-0123456789abcdef"
+
+
+class StationProcess:
+    def __init__(self, data_dir: Path, *args: str, token: str = TOKEN) -> None:
+        self.data_dir, self.token = data_dir, token
+        self.log = data_dir.parent / f"{data_dir.name}-serve.log"
+        cmd = [str(SCRIPT), "serve", "--port", "0", "--viser-port", "0", "--data-dir",
+               str(data_dir), "--token", token, *args]
+        self._log = self.log.open("w")
+        self.proc = subprocess.Popen(cmd, stdout=self._log, stderr=subprocess.STDOUT,
+                                     env={**os.environ, "PYTHONUNBUFFERED": "1"})
+        self.url = self._wait_for("console", r"console (http://[^/]+)/")
+        self.viser_url = self._wait_for("3D view", r"3D view (http://\S+)/")
+        self.client = httpx.Client(base_url=self.url, timeout=30,
+                                   headers={"Authorization": f"Bearer {token}"})
+
+    def _wait_for(self, what: str, pattern: str, timeout: float = 60.0) -> str:
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            found = re.search(pattern, self.log.read_text())
+            if found:
+                return found.group(1)
+            if self.proc.poll() is not None:
+                raise RuntimeError(f"serve exited: {self.log.read_text()[-2000:]}")
+            time.sleep(0.05)
+        raise RuntimeError(f"no {what} URL from serve: {self.log.read_text()[-2000:]}")
+
+    def stop(self, sig: int = signal.SIGTERM, timeout: float = 10.0) -> float:
+        """Send `sig`; returns the seconds until the process exited."""
+        self.client.close()
+        t0 = time.monotonic()
+        if self.proc.poll() is None:
+            self.proc.send_signal(sig)
+            self.proc.wait(timeout)
+        self._log.close()
+        return time.monotonic() - t0
+
+    def wait_plan(self, plan_id: str, timeout: float = 30.0) -> dict:
+        return self.wait(f"/api/plans/{plan_id}", "status", ("queued", "running"), timeout)
+
+    def wait(self, path: str, key: str, pending: tuple, timeout: float) -> dict:
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            body = self.client.get(path).json()
+            if body[key] not in pending:
+                return body
+            time.sleep(0.05)
+        raise AssertionError(f"{path} still {body[key]} after {timeout} s")
