@@ -152,7 +152,7 @@ def create_app(station: Station) -> FastAPI:
 
     @app.get("/api/telemetry", tags=["telemetry"])
     async def telemetry(
-        run: Annotated[int | None, Query(ge=1)] = None,
+        run: Annotated[int | None, Query(ge=1, le=2**63 - 1)] = None,
         since: dt.datetime | None = None,
         until: dt.datetime | None = None,
         limit: Annotated[int, Query(ge=1, le=1_000_000)] = 100_000,
@@ -162,7 +162,7 @@ def create_app(station: Station) -> FastAPI:
 
     @app.get("/api/telemetry/export", tags=["telemetry"])
     async def export(
-        run: Annotated[int | None, Query(ge=1)] = None,
+        run: Annotated[int | None, Query(ge=1, le=2**63 - 1)] = None,
         format: Literal["csv", "gpx", "geojson", "jsonl"] = "csv",
     ) -> StreamingResponse:
         run_row = await asyncio.to_thread(station.store.run, run) if run is not None else None
