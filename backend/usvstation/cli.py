@@ -114,7 +114,8 @@ def build_parser() -> argparse.ArgumentParser:
                      help="stop after this many seconds (default: run until interrupted)")
 
     bench = sub.add_parser("bench", help="run a benchmark and print its figures")
-    bench.add_argument("name", choices=["planner", "tracking", "link"], help="which benchmark")
+    bench.add_argument("name", choices=["planner", "tracking", "link", "server"],
+                       help="which benchmark")
     bench.add_argument("--json", action="store_true", help="print one JSON object (default)")
     bench.add_argument("--scenarios", type=Path, help="folder of scenarios (default: public suite)")
     bench.add_argument("--seeds", type=int, default=5, help="seeds per scenario (default 5)")
@@ -233,6 +234,13 @@ def _cmd_sim(args: argparse.Namespace) -> int:
 
 
 def _cmd_bench(args: argparse.Namespace) -> int:
+    if args.name == "server":
+        from usvstation.bench.server import run_server_bench
+
+        result = run_server_bench(quick=args.quick,
+                                  progress=lambda msg: print(msg, file=sys.stderr, flush=True))
+        print(json.dumps(result, indent=2))
+        return EXIT_OK
     if args.name == "link":
         from usvstation.bench.link import run_link_bench
 

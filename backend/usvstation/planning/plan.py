@@ -9,6 +9,7 @@ import numpy as np
 from scipy import ndimage
 
 from usvstation.planning.encoding import InfeasibleProblem
+from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.planning.iga import IGAResult, run_iga
 from usvstation.planning.options import IGAOptions
 from usvstation.planning.problem import Problem
@@ -17,10 +18,6 @@ from usvstation.planning.xyt import ObstacleField
 from usvstation.scenario import Scenario
 
 PLANNERS = ("iga",)
-
-
-class NoFeasiblePlan(RuntimeError):
-    """No plan meets every hard constraint; the message gives the reason."""
 
 
 def plan_scenario(

@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 import asyncio
+import contextlib
 import multiprocessing
+import os
 import uuid
 from concurrent.futures import ProcessPoolExecutor
 from typing import Any
 
+from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.runtime import tune_allocator
 from usvstation.scenario import Scenario
 from usvstation.services.hub import LiveHub
@@ -20,6 +23,24 @@ def plan_in_worker(scenario: dict[str, Any], planner: str, seed: int | None) -> 
     from usvstation.scenario import parse_scenario
 
     return plan_scenario(parse_scenario(scenario), planner=planner, seed=seed)
+
+
+WORKER_NICENESS = 19
+
+
+def init_worker() -> None:
+    """Plan workers: tuned allocator, and the CPU only when the server does not want it.
+
+    Planning is background work; the event loop (telemetry, websocket, API)
+    must get the CPU first on a 2-core machine running several plans, so the
+    workers run under SCHED_IDLE (Linux), else at the lowest nice level.
+    """
+    tune_allocator()
+    try:
+        os.sched_setscheduler(0, os.SCHED_IDLE, os.sched_param(0))
+    except (AttributeError, OSError):
+        with contextlib.suppress(OSError):
+            os.nice(WORKER_NICENESS)
 
 
 def _warm_up() -> bool:
@@ -40,7 +61,7 @@ class PlanService:
 
     async def start(self) -> None:
         ctx = multiprocessing.get_context("forkserver")
-        self._pool = ProcessPoolExecutor(self.workers, mp_context=ctx, initializer=tune_allocator)
+        self._pool = ProcessPoolExecutor(self.workers, mp_context=ctx, initializer=init_worker)
         loop = asyncio.get_running_loop()
         for job in await asyncio.to_thread(self.store.plans):
             if job["status"] in ("queued", "running"):  # interrupted by a restart
@@ -79,8 +100,6 @@ class PlanService:
         }
 
     async def _run(self, job: dict[str, Any]) -> None:
-        from usvstation.planning.plan import NoFeasiblePlan
-
         async with self._slots:
             job["status"] = "running"
             await self._save(job)

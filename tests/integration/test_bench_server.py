@@ -1,0 +1,14 @@
+"""The server benchmark runs end to end (quick mode) and measures what it promises."""
+
+from usvstation.bench.server import run_server_bench
+
+
+def test_quick_server_bench():
+    out = run_server_bench(quick=True)
+    ws = out["websocket"]
+    assert ws["clients"] == 20
+    assert ws["messages_per_client_per_s"] >= 45  # telemetry at 50 Hz reached every client
+    assert 0 < ws["p50_ms"] <= ws["p99_ms"] <= ws["max_ms"]
+    hp = out["health_under_planning"]
+    assert hp["plans_at_once"] == 4 and hp["plans_completed"] >= 4 and hp["count"] > 20
+    assert hp["running_median"] >= 2
