@@ -16,8 +16,7 @@ $(STAMP): pyproject.toml
 setup: $(STAMP)
 
 run: setup
-	$(BIN)/usv-station --help
-	$(BIN)/usv-station plan case1
+	$(BIN)/usv-station serve
 
 test: setup
 	$(BIN)/python -m pytest
