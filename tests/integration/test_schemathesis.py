@@ -11,12 +11,14 @@ SCHEMATHESIS = Path(sys.executable).parent / "schemathesis"
 
 
 def test_no_server_errors_on_500_plus_generated_requests(tmp_path):
+    # one worker: schemathesis' concurrent workers can trip CPython 3.11's ast.parse,
+    # which is not thread-safe (a tool error, not the station's)
     st = StationProcess(tmp_path / "data", "--sim-speed", "5")
     try:
         out = subprocess.run(
             [str(SCHEMATHESIS), "run", f"{st.url}/openapi.json",
              "-H", f"Authorization: Bearer {st.token}", "--checks", "not_a_server_error",
-             "--phases", "coverage,fuzzing", "-n", "10", "--seed", "7", "-w", "2"],
+             "--phases", "coverage,fuzzing", "-n", "10", "--seed", "7", "-w", "1"],
             capture_output=True, text=True, timeout=300,
         )
     finally:
