@@ -26,7 +26,7 @@ from usvstation.control import Autopilot
 from usvstation.dynamics import Environment, ThrustCommand, Vessel, VesselState, otter
 from usvstation.dynamics.params import VesselParams
 from usvstation.guidance import CompensatedAVLOS, DisturbancePredictor, Trajectory
-from usvstation.sim.vehicle import VehicleState, Waypoint
+from usvstation.sim.vehicle import VehicleState, Waypoint, checked_mission, cross_track_error
 
 CONTROL_PERIOD = 0.05  # s, autopilot and model
 GUIDANCE_PERIOD = 0.2  # s, AV-LOS (paper 000 sec. 4.2 uses 0.2 s)
@@ -80,7 +80,7 @@ class DynamicVehicle:
         return self._phase
 
     def set_mission(self, waypoints: Sequence[Waypoint]) -> None:
-        self._wps = list(waypoints)
+        self._wps = checked_mission(waypoints)
         self._guide, self._complete, self._segment = None, False, 0
         self._keep_station()
 
@@ -201,16 +201,6 @@ class DynamicVehicle:
             yaw_rate=0.0 if self._phase == "done" else s.r,
             thrust_left=max(-1.0, min(1.0, self._thrust.left / full)),
             thrust_right=max(-1.0, min(1.0, self._thrust.right / full)),
-            waypoint_index=index, cross_track_error=self._cross_track(s.x, s.y, index),
+            waypoint_index=index, cross_track_error=cross_track_error(self._wps, s.x, s.y, index),
             mission_complete=self._complete,
         )
-
-    def _cross_track(self, x: float, y: float, i: int) -> float:
-        if i == 0 or len(self._wps) < 2:
-            return 0.0
-        a, b = self._wps[i - 1], self._wps[i]
-        dx, dy = b.x - a.x, b.y - a.y
-        length = math.hypot(dx, dy)
-        if length < 1e-9:
-            return 0.0
-        return (dy * (x - a.x) - dx * (y - a.y)) / length  # positive right of the track

@@ -78,6 +78,26 @@ class Vehicle(Protocol):
         """Leave shore-assisted mode and rejoin the mission."""
 
 
+def checked_mission(waypoints: Sequence[Waypoint]) -> list[Waypoint]:
+    """The waypoints as a list; ValueError unless their times increase."""
+    wps = list(waypoints)
+    if not wps or any(b.t <= a.t for a, b in pairwise(wps)):
+        raise ValueError("a mission needs waypoints with increasing times")
+    return wps
+
+
+def cross_track_error(wps: Sequence[Waypoint], x: float, y: float, i: int) -> float:
+    """Distance of (x, y) from the leg into waypoint i, positive right of the track (m)."""
+    if i == 0 or i >= len(wps):
+        return 0.0
+    a, b = wps[i - 1], wps[i]
+    dx, dy = b.x - a.x, b.y - a.y
+    length = math.hypot(dx, dy)
+    if length < 1e-9:
+        return 0.0
+    return (dy * (x - a.x) - dx * (y - a.y)) / length
+
+
 def _wrap(a: float) -> float:
     return (a + math.pi) % (2 * math.pi) - math.pi
 
@@ -110,9 +130,7 @@ class KinematicVehicle:
         return self._phase
 
     def set_mission(self, waypoints: Sequence[Waypoint]) -> None:
-        wps = list(waypoints)
-        if not wps or any(b.t <= a.t for a, b in pairwise(wps)):
-            raise ValueError("a mission needs waypoints with increasing times")
+        wps = checked_mission(waypoints)
         self._wps = wps
         self._tau = wps[0].t
         self._phase = "idle"
@@ -161,16 +179,6 @@ class KinematicVehicle:
         f = (tau - a.t) / (b.t - a.t)
         return a.x + f * (b.x - a.x), a.y + f * (b.y - a.y), i
 
-    def _cross_track(self, x: float, y: float, i: int) -> float:
-        if i == 0 or len(self._wps) < 2:
-            return 0.0
-        a, b = self._wps[i - 1], self._wps[i]
-        dx, dy = b.x - a.x, b.y - a.y
-        length = math.hypot(dx, dy)
-        if length < 1e-9:
-            return 0.0
-        return (dy * (x - a.x) - dx * (y - a.y)) / length  # positive right of the track
-
     def step(self, dt: float) -> None:
         if dt <= 0:
             return
@@ -208,7 +216,7 @@ class KinematicVehicle:
         diff = max(-0.5, min(0.5, yaw_rate))  # turn anticlockwise: right thruster harder
         left = max(-1.0, min(1.0, share - diff)) if speed > 0 else 0.0
         right = max(-1.0, min(1.0, share + diff)) if speed > 0 else 0.0
-        xte = self._cross_track(x, y, index) if self._wps else 0.0
+        xte = cross_track_error(self._wps, x, y, index)
         self._state = VehicleState(
             t=s.t + dt, x=x, y=y, heading=heading, speed=speed, course=course,
             yaw_rate=yaw_rate, thrust_left=left, thrust_right=right, waypoint_index=index,
