@@ -29,6 +29,7 @@ let charts;
 let editor;
 let frameRequested = false;
 let chartTimer = null;
+let lastChartAt = -Infinity;
 let firstDrawn = false;
 let firstLiveDrawn = false;
 
@@ -77,7 +78,8 @@ function drawBoat(row) {
   map.setBoat(row);
   $('boat-x').textContent = fmt(row.x);
   $('boat-y').textContent = fmt(row.y);
-  $('boat-heading').textContent = fmt(row.heading_deg, 0);
+  $('boat-heading').textContent = fmt(row.ramp_heading_deg, 0);
+  $('boat-compass').textContent = fmt(row.heading_deg, 0);
   $('boat-speed').textContent = fmt(row.speed, 2);
   $('boat-state').textContent = row.mode ?? '–';
   if (!firstDrawn) {
@@ -90,12 +92,15 @@ function drawBoat(row) {
   }
 }
 
+/** Redraw the charts now if they have not been drawn for a while, else a little later. */
 function scheduleCharts() {
   if (chartTimer !== null) return;
+  const wait = Math.max(0, lastChartAt + CHART_EVERY_MS - performance.now());
   chartTimer = setTimeout(() => {
     chartTimer = null;
+    lastChartAt = performance.now();
     charts.flush();
-  }, CHART_EVERY_MS);
+  }, wait);
 }
 
 function setDisplayTime(t) {
@@ -176,9 +181,23 @@ function renderRuns(runs) {
   body.replaceChildren(...[...runs].sort((a, b) => b.id - a.id).map((run) => {
     const tr = document.createElement('tr');
     tr.dataset.run = String(run.id);
-    const started = run.started_at ? new Date(run.started_at).toLocaleTimeString() : '–';
-    const cells = [`#${run.id}`, run.state, started, String(run.points ?? 0)];
-    for (const text of cells) {
+    const started = run.started_at ? new Date(run.started_at).toLocaleTimeString([],
+      { hour: '2-digit', minute: '2-digit', second: '2-digit', hour12: false }) : '–';
+    const first = document.createElement('td');
+    const show = document.createElement('button');
+    show.type = 'button';
+    show.className = 'icon';
+    show.textContent = `#${run.id}`;
+    show.title = `show run ${run.id} on the map and charts`;
+    show.setAttribute('aria-label', `show run ${run.id} on the map and charts`);
+    show.addEventListener('click', () => {
+      state.follow = run.state === 'active';
+      $('follow').checked = state.follow;
+      showRun(run.id, { live: run.state === 'active' });
+    });
+    first.append(show);
+    tr.append(first);
+    for (const text of [run.state, started, String(run.points ?? 0)]) {
       const td = document.createElement('td');
       td.textContent = text;
       tr.append(td);
@@ -191,21 +210,9 @@ function renderRuns(runs) {
       a.download = `run-${run.id}.${format === 'jsonl' ? 'jsonl' : format}`;
       a.textContent = format.toUpperCase();
       a.setAttribute('aria-label', `download run ${run.id} as ${format.toUpperCase()}`);
-      links.append(a);
+      links.append(a, ' ');
     }
     tr.append(links);
-    const td = document.createElement('td');
-    const show = document.createElement('button');
-    show.type = 'button';
-    show.textContent = 'Show';
-    show.setAttribute('aria-label', `show run ${run.id} on the map and charts`);
-    show.addEventListener('click', () => {
-      state.follow = run.state === 'active';
-      $('follow').checked = state.follow;
-      showRun(run.id, { live: run.state === 'active' });
-    });
-    td.append(show);
-    tr.append(td);
     return tr;
   }));
 }
@@ -560,14 +567,20 @@ function bindControls() {
   });
 }
 
+/** Let the browser paint and handle input between the start-up steps (no long tasks). */
+const nextTask = () => new Promise((resolve) => { setTimeout(resolve, 0); });
+
 async function main() {
   api.adoptTokenFromUrl();
+  await nextTask();
   map = new ConsoleMap($('map'), {
     onClick: (x, y) => editor.mapClicked(x, y),
     onStartMoved: (x, y) => editor.moveStart(x, y),
     onObstacleMoved: (i, x, y) => editor.moveObstacle(i, x, y),
   });
+  await nextTask();
   charts = new TelemetryCharts($('chart-heading'), $('chart-speed'));
+  await nextTask();
   editor = new ScenarioEditor({
     map,
     centre: () => map.centreRamp(),

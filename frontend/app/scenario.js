@@ -141,8 +141,7 @@ export class ScenarioEditor {
   }
 
   fieldEdited(input) {
-    const label = input.closest('label')?.textContent.trim() ?? input.dataset.field;
-    const v = this.readNumber(input, `${input.dataset.field} (${label})`);
+    const v = this.readNumber(input, input.dataset.field);
     if (v === null) return;
     setPath(this.scenario, input.dataset.field, v);
     this.changed({ redrawOnly: true });

@@ -30,6 +30,7 @@ DEFAULT_HORIZON_S = 120.0
 HORIZON_MARGIN = 1.2  # obstacles are drawn to this multiple of the plan's duration
 DISC_HEIGHT_M = 0.15
 PLANE_SIZE_M = 200.0
+GRID_WIDTH_M = 120.0
 LAYERS = {"obstacles": "Obstacles", "plan": "Planned path", "track": "Real path",
           "ramp": "Ramp and grid", "time": "Time plane"}
 PLAN_COLOR = (40, 90, 220)
@@ -117,11 +118,11 @@ class ThreeDView:
         scene = self.server.scene
         scene.set_up_direction("+z")
         camera = self.server.initial_camera
-        camera.position = (115.0, -75.0, 50.0)
-        camera.look_at = (40.0, 0.0, 10.0)
+        camera.position = (100.0, -60.0, 38.0)
+        camera.look_at = (40.0, 0.0, 12.0)
         self.layers = {key: scene.add_frame(f"/{key}", show_axes=False) for key in LAYERS}
-        scene.add_grid("/ramp/grid", width=PLANE_SIZE_M, height=PLANE_SIZE_M, cell_size=10.0,
-                       position=(60.0, 0.0, 0.0))
+        scene.add_grid("/ramp/grid", width=PLANE_SIZE_M, height=GRID_WIDTH_M, cell_size=10.0,
+                       section_size=50.0, position=(60.0, 0.0, 0.0))
         # the ramp: a slab behind the ramp end, and its axis out to sea
         scene.add_box("/ramp/slab", dimensions=(6.0, 3.0, 0.4), color=(120, 120, 120),
                       position=(-3.0, 0.0, 0.0))
