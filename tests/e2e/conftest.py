@@ -29,8 +29,10 @@ def _unavailable(reason: str) -> None:
     pytest.skip(reason)
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="module")
 def browser():
+    """Chromium for one test module. Playwright's sync API keeps an asyncio loop running
+    in this thread while it is open, so it must close before other tests call asyncio.run."""
     if not CHROMIUM.exists():
         _unavailable(f"Chromium not found at {CHROMIUM}: `apt-get install chromium` "
                      "(.ci/run does; the tests never download a browser)")

@@ -76,6 +76,7 @@ def test_plan_sets_the_horizon_and_scrubbing_moves_the_time_plane(view):
     moving = [i for i, o in enumerate(scenario.obstacles) if o.moving]
     disc, vx, vy = view._discs[moving[0]]
     assert tuple(disc.position) == pytest.approx((vx * 10.0, vy * 10.0, 10.0))
+    assert view._plane.position[2] == pytest.approx(10.0)
 
 
 def test_live_track_moves_the_time_when_following(view):

@@ -29,7 +29,7 @@ TRACK_REDRAW_S = 0.5  # redraw the real path at most this often
 DEFAULT_HORIZON_S = 120.0
 HORIZON_MARGIN = 1.2  # obstacles are drawn to this multiple of the plan's duration
 DISC_HEIGHT_M = 0.15
-PLANE_SIZE_M = 200.0
+GRID_LENGTH_M = 200.0
 GRID_WIDTH_M = 120.0
 LAYERS = {"obstacles": "Obstacles", "plan": "Planned path", "track": "Real path",
           "ramp": "Ramp and grid", "time": "Time plane"}
@@ -97,6 +97,7 @@ class ThreeDView:
         self.layers: dict[str, Any] = {}
         self.gui: dict[str, Any] = {}
         self._plane: Any = None
+        self._plane_centre = (60.0, 0.0)
         self._planned_marker: Any = None
         self._real_marker: Any = None
         self._obstacle_nodes: list[Any] = []
@@ -121,7 +122,7 @@ class ThreeDView:
         camera.position = (100.0, -60.0, 38.0)
         camera.look_at = (40.0, 0.0, 12.0)
         self.layers = {key: scene.add_frame(f"/{key}", show_axes=False) for key in LAYERS}
-        scene.add_grid("/ramp/grid", width=PLANE_SIZE_M, height=GRID_WIDTH_M, cell_size=10.0,
+        scene.add_grid("/ramp/grid", width=GRID_LENGTH_M, height=GRID_WIDTH_M, cell_size=10.0,
                        section_size=50.0, position=(60.0, 0.0, 0.0))
         # the ramp: a slab behind the ramp end, and its axis out to sea
         scene.add_box("/ramp/slab", dimensions=(6.0, 3.0, 0.4), color=(120, 120, 120),
@@ -134,9 +135,7 @@ class ThreeDView:
         scene.add_line_segments("/ramp/t_axis", np.array(
             [[[0, 0, 0], [0, 0, 40.0 * self.time_scale]]], np.float32),
             colors=(90, 90, 90), thickness=0.1)
-        self._plane = scene.add_box("/time/plane", dimensions=(PLANE_SIZE_M, PLANE_SIZE_M, 0.02),
-                                    color=(120, 170, 220), opacity=0.15,
-                                    position=(60.0, 0.0, 0.0))
+        self._draw_plane(-10.0, 130.0, -40.0, 40.0)
         self._planned_marker = scene.add_icosphere("/time/planned", radius=1.0,
                                                    color=PLAN_COLOR, visible=False)
         self._real_marker = scene.add_icosphere("/time/real", radius=1.0, color=TRACK_COLOR,
@@ -199,7 +198,7 @@ class ThreeDView:
             self.time_s = t
             z = t * self.time_scale
             lines = [f"t = {t:.1f} s"]
-            self._plane.position = (60.0, 0.0, z)
+            self._plane.position = (*self._plane_centre, z)
             for handle, vx, vy in self._discs:
                 handle.position = (vx * t, vy * t, z)
             if self.waypoints:
@@ -223,6 +222,13 @@ class ThreeDView:
             if readout is not None:
                 readout.content = "  \n".join(lines)
 
+    def _draw_plane(self, x0: float, x1: float, y0: float, y1: float) -> None:
+        """The time plane over the scene's extent (x0..x1, y0..y1), at the current time."""
+        self._plane_centre = ((x0 + x1) / 2, (y0 + y1) / 2)
+        self._plane = self.server.scene.add_box(
+            "/time/plane", dimensions=(x1 - x0, y1 - y0, 0.02), color=(120, 170, 220),
+            opacity=0.15, position=(*self._plane_centre, self.time_s * self.time_scale))
+
     def _set_horizon(self, horizon_s: float) -> None:
         self.horizon_s = horizon_s
         slider = self.gui.get("time")
@@ -239,6 +245,9 @@ class ThreeDView:
             if horizon_s is not None:
                 self._set_horizon(horizon_s)
             self._draw_obstacles()
+            xs = [0.0, scenario.start.x, *(o.x for o in scenario.obstacles)]
+            ys = [0.0, scenario.start.y, *(o.y for o in scenario.obstacles)]
+            self._draw_plane(min(xs) - 15.0, max(xs) + 15.0, min(ys) - 15.0, max(ys) + 15.0)
             self.server.scene.add_icosphere("/start", radius=1.0, color=(40, 160, 60),
                                             position=(scenario.start.x, scenario.start.y, 0.0))
         self.set_time(self.time_s)
