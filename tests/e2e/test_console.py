@@ -47,6 +47,8 @@ def test_plan_upload_run_and_download(page, station, artifacts):
     assert "token" not in page.url
     assert page.evaluate("sessionStorage.getItem('usv-station-token')") == station.token
     expect(page.locator("#link-state")).to_contain_text("link up")
+    expect(page.locator("#frames-lost")).to_have_text("0")
+    expect(page.locator("#hb-age")).to_have_text(re.compile(r"^\d\.\d$"))
     n_before = page.locator("#obstacle-rows tr").count()
 
     # add an obstacle by clicking the map, then give it a radius and a velocity

@@ -82,8 +82,9 @@ def test_plan_sets_the_horizon_and_scrubbing_moves_the_time_plane(view):
 def test_live_track_moves_the_time_when_following(view):
     view.show_scenario(load_scenario("case1"))
     view.show_plan({"waypoints": WAYPOINTS})
-    view.clear_track()
-    assert view.follow_live is True
+    view.gui["follow"].value = False  # left unticked after the last run
+    view.clear_track()  # a new run follows again
+    assert view.follow_live is True and view.gui["follow"].value is True
     for i in range(3):
         view.add_track_point(80.0 - i, 10.0, 2.0 * i)
         time.sleep(0.55)  # past the redraw interval: each point redraws

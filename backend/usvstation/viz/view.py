@@ -285,10 +285,12 @@ class ThreeDView:
         self.set_time(min(self.time_s, self.horizon_s))
 
     def clear_track(self) -> None:
+        """A new run: no real path yet, and the time follows the run again."""
         with self._lock:
             self._track = []
             if self.server is not None:
                 self.server.scene.add_frame("/track/path", show_axes=False)
+        self._set_follow(True)
         self.set_time(0.0)
 
     def add_track_point(self, x: float, y: float, t: float) -> None:
