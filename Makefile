@@ -1,11 +1,13 @@
 # The README's two commands are `make run` and `make test`; both install what
-# they need into a project-local .venv first. `make setup` only installs.
+# they need into a project-local .venv (and the console's npm packages into
+# frontend/node_modules) first. `make setup` only installs.
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed-stamp
+NODE_STAMP := frontend/node_modules/.installed-stamp
 
-.PHONY: setup run test lint bench clean
+.PHONY: setup run serve test lint bench clean
 
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -13,10 +15,20 @@ $(STAMP): pyproject.toml
 	$(BIN)/python -m pip install --quiet -e '.[dev]'
 	touch $(STAMP)
 
-setup: $(STAMP)
+# The console's libraries (Leaflet, uPlot) from npm, served by the station itself
+# so the console works with no internet on a ship.
+$(NODE_STAMP): frontend/package.json frontend/package-lock.json
+	@command -v npm >/dev/null || { echo "npm not found: install Node.js and npm" \
+	  "(Debian: apt-get install nodejs npm)"; exit 1; }
+	cd frontend && npm ci --no-audit --no-fund --loglevel=error
+	touch $(NODE_STAMP)
+
+setup: $(STAMP) $(NODE_STAMP)
 
 run: setup
 	$(BIN)/usv-station serve
+
+serve: run
 
 test: setup
 	$(BIN)/python -m pytest
@@ -28,4 +40,4 @@ bench: setup
 	$(BIN)/usv-station bench planner --json
 
 clean:
-	rm -rf $(VENV) .pytest_cache .ruff_cache .hypothesis
+	rm -rf $(VENV) .pytest_cache .ruff_cache .hypothesis frontend/node_modules test-artifacts

@@ -31,6 +31,9 @@ class Settings(BaseSettings):
     plan_workers: int = Field(2, ge=1, le=32)
     heartbeat_timeout_s: float = Field(3.0, gt=0.0)
     telemetry_hz: float = Field(5.0, gt=0.0, le=50.0)
+    frontend_dir: Path | None = Field(
+        None, description="operator console files (index.html, app/, node_modules/); "
+        "default: frontend/ of the source checkout")
 
 
 class ExposureError(ValueError):

@@ -9,6 +9,7 @@ from collections.abc import Callable
 import uvicorn
 
 from usvstation.api.app import create_app
+from usvstation.api.console import default_frontend_dir, frontend_problem
 from usvstation.config import Settings
 from usvstation.station import Station
 
@@ -50,6 +51,9 @@ def serve(settings: Settings, announce: Callable[[str], None] = print) -> int:
     server = uvicorn.Server(config)
     link = "simulated boat (pty)" if settings.link == "sim" else settings.link
     announce(f"usv-station: data in {settings.data_dir.resolve()}, boat link: {link}")
+    problem = frontend_problem(settings.frontend_dir or default_frontend_dir())
+    if problem is not None:
+        announce(f"usv-station: warning: {problem}")
 
     async def run() -> None:
         task = asyncio.create_task(server.serve(sockets=[sock]))

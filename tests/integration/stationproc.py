@@ -17,14 +17,15 @@ TOKEN = "e2e-token-0123456789abcdef"
 
 
 class StationProcess:
-    def __init__(self, data_dir: Path, *args: str, token: str = TOKEN) -> None:
+    def __init__(self, data_dir: Path, *args: str, token: str = TOKEN,
+                 env: dict[str, str] | None = None) -> None:
         self.data_dir, self.token = data_dir, token
         self.log = data_dir.parent / f"{data_dir.name}-serve.log"
         cmd = [str(SCRIPT), "serve", "--port", "0", "--viser-port", "0", "--data-dir",
                str(data_dir), "--token", token, *args]
         self._log = self.log.open("w")
         self.proc = subprocess.Popen(cmd, stdout=self._log, stderr=subprocess.STDOUT,
-                                     env={**os.environ, "PYTHONUNBUFFERED": "1"})
+                                     env={**os.environ, "PYTHONUNBUFFERED": "1", **(env or {})})
         self.url = self._wait_for("console", r"console (http://[^/]+)/")
         self.viser_url = self._wait_for("3D view", r"3D view (http://\S+)/")
         self.client = httpx.Client(base_url=self.url, timeout=30,

@@ -46,6 +46,9 @@ def test_plan_upload_start_complete_and_export(station):
 
     boat = c.get("/api/boat").json()
     assert boat["link"]["up"] and boat["link"]["simulated"]
+    # a pty loses and corrupts nothing: the decoder's counters stay at zero
+    assert boat["link"]["frames"] > 0
+    assert boat["link"]["frames_lost"] == 0 and boat["link"]["frames_bad"] == 0
     plan_job = station.wait_plan(c.post("/api/plans", json={"seed": 1}).json()["id"])
     assert plan_job["status"] == "done"
     plan = plan_job["plan"]

@@ -168,6 +168,7 @@ class BoatService:
                 "telemetry_age_s": None if self.telemetry_at is None
                 else round(now - self.telemetry_at, 3),
                 "frames": self.frames,
+                **self._decoder_counts(),
                 "error": (self.link.last_error or None) if self.link else None,
             },
             "boat": None if hb is None else {
@@ -179,6 +180,13 @@ class BoatService:
             "mission": _public(self.active) if self.active else None,
             "status": self.status[-10:],
         }
+
+    def _decoder_counts(self) -> dict[str, int | None]:
+        """Frames lost (sequence gaps) and refused (bad CRC, length, ...) by the decoder."""
+        if self.link is None:
+            return {"frames_lost": None, "frames_bad": None}
+        stats = self.link.protocol.decoder.stats
+        return {"frames_lost": stats.lost, "frames_bad": stats.errors}
 
     def get_mission(self, mission_id: str) -> dict[str, Any] | None:
         mission = self.missions.get(mission_id)

@@ -5,10 +5,16 @@ metres per second. Obstacles are cylinders over the plan's duration: upright
 when static, leaning along their velocity when moving (eq. 8's oblique
 cylinders). The planned path and the boat's real path (growing live from
 telemetry) are lines in the same space.
+
+The viser GUI toggles each layer and scrubs a time plane through the scene:
+at the chosen t it shows the obstacles' circles, the planned position and
+the boat's real position. While a run is live the time follows the boat
+unless the operator moves the slider.
 """
 
 from __future__ import annotations
 
+import bisect
 import math
 import threading
 import time
@@ -20,6 +26,15 @@ from usvstation.scenario import Scenario
 
 CIRCLE_SIDES = 32
 TRACK_REDRAW_S = 0.5  # redraw the real path at most this often
+DEFAULT_HORIZON_S = 120.0
+HORIZON_MARGIN = 1.2  # obstacles are drawn to this multiple of the plan's duration
+DISC_HEIGHT_M = 0.15
+GRID_LENGTH_M = 200.0
+GRID_WIDTH_M = 120.0
+LAYERS = {"obstacles": "Obstacles", "plan": "Planned path", "track": "Real path",
+          "ramp": "Ramp and grid", "time": "Time plane"}
+PLAN_COLOR = (40, 90, 220)
+TRACK_COLOR = (220, 40, 40)
 
 
 def oblique_cylinder(cx: float, cy: float, r: float, vx: float, vy: float, t_end: float,
@@ -46,16 +61,51 @@ def polyline_segments(points: np.ndarray) -> np.ndarray:
     return np.stack([points[:-1], points[1:]], axis=1).astype(np.float32)
 
 
+def position_at(waypoints: list[dict[str, Any]], t: float) -> tuple[float, float]:
+    """Planned (x, y) at time t: linear in time between waypoints (paper 000 eq. 9)."""
+    ts = [w["t"] for w in waypoints]
+    if t <= ts[0]:
+        return waypoints[0]["x"], waypoints[0]["y"]
+    if t >= ts[-1]:
+        return waypoints[-1]["x"], waypoints[-1]["y"]
+    i = bisect.bisect_right(ts, t)
+    a, b = waypoints[i - 1], waypoints[i]
+    f = (t - a["t"]) / (b["t"] - a["t"]) if b["t"] > a["t"] else 1.0
+    return a["x"] + (b["x"] - a["x"]) * f, a["y"] + (b["y"] - a["y"]) * f
+
+
+def track_position_at(track: list[tuple[float, float, float]], t_scaled: float
+                      ) -> tuple[float, float] | None:
+    """The real (x, y) last reported at or before scaled time t_scaled, or None."""
+    if not track or t_scaled < track[0][2]:
+        return None
+    i = bisect.bisect_right([p[2] for p in track], t_scaled) - 1
+    return track[i][0], track[i][1]
+
+
 class ThreeDView:
-    """The viser server and its scene; every method is safe to call from any thread."""
+    """The viser server, its scene and GUI; every method is safe to call from any thread."""
 
     def __init__(self, host: str = "127.0.0.1", port: int = 8080, time_scale: float = 1.0) -> None:
         self.host, self.requested_port, self.time_scale = host, port, time_scale
         self.server: Any = None
-        self.horizon_s = 120.0
+        self.horizon_s = DEFAULT_HORIZON_S
+        self.scenario: Scenario | None = None
+        self.waypoints: list[dict[str, Any]] | None = None
+        self.time_s = 0.0
+        self.follow_live = True
+        self.layers: dict[str, Any] = {}
+        self.gui: dict[str, Any] = {}
+        self._plane: Any = None
+        self._plane_centre = (60.0, 0.0)
+        self._planned_marker: Any = None
+        self._real_marker: Any = None
+        self._obstacle_nodes: list[Any] = []
+        self._discs: list[tuple[Any, float, float]] = []  # (handle, vx, vy)
         self._track: list[tuple[float, float, float]] = []
         self._track_drawn_at = 0.0
-        self._lock = threading.Lock()
+        self._slider_from_code = False
+        self._lock = threading.RLock()
 
     @property
     def port(self) -> int | None:
@@ -68,51 +118,180 @@ class ThreeDView:
                                         label="USV recovery: x, y, t")
         scene = self.server.scene
         scene.set_up_direction("+z")
-        scene.add_grid("/grid", width=200.0, height=200.0, cell_size=10.0,
-                       position=(60.0, 0.0, 0.0))
+        camera = self.server.initial_camera
+        camera.position = (100.0, -60.0, 38.0)
+        camera.look_at = (40.0, 0.0, 12.0)
+        self.layers = {key: scene.add_frame(f"/{key}", show_axes=False) for key in LAYERS}
+        scene.add_grid("/ramp/grid", width=GRID_LENGTH_M, height=GRID_WIDTH_M, cell_size=10.0,
+                       section_size=50.0, position=(60.0, 0.0, 0.0))
         # the ramp: a slab behind the ramp end, and its axis out to sea
-        scene.add_box("/ramp", dimensions=(6.0, 3.0, 0.4), color=(120, 120, 120),
+        scene.add_box("/ramp/slab", dimensions=(6.0, 3.0, 0.4), color=(120, 120, 120),
                       position=(-3.0, 0.0, 0.0))
-        scene.add_line_segments("/ramp_axis", np.array([[[0, 0, 0], [150, 0, 0]]], np.float32),
+        scene.add_line_segments("/ramp/axis", np.array([[[0, 0, 0], [150, 0, 0]]], np.float32),
                                 colors=(200, 200, 200), thickness=0.1)
+        scene.add_label("/ramp/x_label", "x (m), out to sea", position=(150.0, 0.0, 0.0))
+        scene.add_label("/ramp/t_label", f"t (s) up, {self.time_scale:g} m per s",
+                        position=(0.0, 0.0, 40.0 * self.time_scale))
+        scene.add_line_segments("/ramp/t_axis", np.array(
+            [[[0, 0, 0], [0, 0, 40.0 * self.time_scale]]], np.float32),
+            colors=(90, 90, 90), thickness=0.1)
+        self._draw_plane(-10.0, 130.0, -40.0, 40.0)
+        self._planned_marker = scene.add_icosphere("/time/planned", radius=1.0,
+                                                   color=PLAN_COLOR, visible=False)
+        self._real_marker = scene.add_icosphere("/time/real", radius=1.0, color=TRACK_COLOR,
+                                                visible=False)
+        self._build_gui()
+
+    def _build_gui(self) -> None:
+        gui = self.server.gui
+        gui.add_markdown("**USV recovery in (x, y, t)**: ramp-frame x, y in metres; time "
+                         f"upwards, {self.time_scale:g} m per second. Blue: planned path; "
+                         "red: real path; orange: obstacles swept over time (eq. 8).")
+        with gui.add_folder("Layers"):
+            for key, label in LAYERS.items():
+                box = gui.add_checkbox(label, True)
+                box.on_update(lambda _, key=key, box=box: self.set_layer(key, box.value))
+                self.gui[f"layer:{key}"] = box
+        with gui.add_folder("Time"):
+            slider = gui.add_slider("t (s)", min=0.0, max=self.horizon_s, step=0.1,
+                                    initial_value=0.0)
+            slider.on_update(lambda _: self._slider_moved(slider.value))
+            follow = gui.add_checkbox("Follow the live run", True)
+            follow.on_update(lambda _: self._set_follow(follow.value))
+            self.gui.update(time=slider, follow=follow,
+                            readout=gui.add_markdown("t = 0.0 s"))
 
     def stop(self) -> None:
         if self.server is not None:
             self.server.stop()
             self.server = None
 
+    # --- layers and time --------------------------------------------------------------------
+    def set_layer(self, key: str, visible: bool) -> None:
+        """Show or hide one layer (a key of LAYERS)."""
+        if key not in LAYERS:
+            raise ValueError(f"unknown layer {key!r}; layers: {', '.join(LAYERS)}")
+        if self.server is None:
+            return
+        self.layers[key].visible = visible
+        box = self.gui.get(f"layer:{key}")
+        if box is not None and box.value != visible:
+            box.value = visible
+
+    def _slider_moved(self, t: float) -> None:
+        if not self._slider_from_code:
+            self._set_follow(False)
+        self.set_time(t)
+
+    def _set_follow(self, follow: bool) -> None:
+        self.follow_live = follow
+        box = self.gui.get("follow")
+        if box is not None and box.value != follow:
+            box.value = follow
+
+    def set_time(self, t: float) -> None:
+        """Move the time plane to t s: obstacles, planned and real positions at that time."""
+        if self.server is None:
+            return
+        with self._lock:
+            t = min(max(float(t), 0.0), self.horizon_s)
+            self.time_s = t
+            z = t * self.time_scale
+            lines = [f"t = {t:.1f} s"]
+            self._plane.position = (*self._plane_centre, z)
+            for handle, vx, vy in self._discs:
+                handle.position = (vx * t, vy * t, z)
+            if self.waypoints:
+                x, y = position_at(self.waypoints, t)
+                self._planned_marker.position = (x, y, z)
+                self._planned_marker.visible = True
+                lines.append(f"planned: x {x:.1f} m, y {y:.1f} m")
+            real = track_position_at(self._track, z)
+            self._real_marker.visible = real is not None
+            if real is not None:
+                self._real_marker.position = (real[0], real[1], z)
+                lines.append(f"real: x {real[0]:.1f} m, y {real[1]:.1f} m")
+            slider = self.gui.get("time")
+            if slider is not None and abs(slider.value - t) > 1e-9:
+                self._slider_from_code = True
+                try:
+                    slider.value = t
+                finally:
+                    self._slider_from_code = False
+            readout = self.gui.get("readout")
+            if readout is not None:
+                readout.content = "  \n".join(lines)
+
+    def _draw_plane(self, x0: float, x1: float, y0: float, y1: float) -> None:
+        """The time plane over the scene's extent (x0..x1, y0..y1), at the current time."""
+        self._plane_centre = ((x0 + x1) / 2, (y0 + y1) / 2)
+        self._plane = self.server.scene.add_box(
+            "/time/plane", dimensions=(x1 - x0, y1 - y0, 0.02), color=(120, 170, 220),
+            opacity=0.15, position=(*self._plane_centre, self.time_s * self.time_scale))
+
+    def _set_horizon(self, horizon_s: float) -> None:
+        self.horizon_s = horizon_s
+        slider = self.gui.get("time")
+        if slider is not None:
+            slider.max = horizon_s
+
+    # --- scene content ------------------------------------------------------------------------
     def show_scenario(self, scenario: Scenario, horizon_s: float | None = None) -> None:
         """Obstacles (inflated circles as swept cylinders) and the start of a scenario."""
         if self.server is None:
             return
-        if horizon_s is not None:
-            self.horizon_s = horizon_s
-        scene = self.server.scene
         with self._lock:
-            scene.add_frame("/obstacles", show_axes=False)
-            for i, o in enumerate(scenario.obstacles):
-                v, f = oblique_cylinder(o.x, o.y, o.radius, o.vx, o.vy, self.horizon_s,
-                                        self.time_scale)
-                color = (230, 120, 60) if o.moving else (150, 90, 60)
-                scene.add_mesh_simple(f"/obstacles/{i}", v, f, color=color, opacity=0.6,
-                                      side="double")
-            scene.add_icosphere("/start", radius=1.0, color=(40, 160, 60),
-                                position=(scenario.start.x, scenario.start.y, 0.0))
+            self.scenario = scenario
+            if horizon_s is not None:
+                self._set_horizon(horizon_s)
+            self._draw_obstacles()
+            xs = [0.0, scenario.start.x, *(o.x for o in scenario.obstacles)]
+            ys = [0.0, scenario.start.y, *(o.y for o in scenario.obstacles)]
+            self._draw_plane(min(xs) - 15.0, max(xs) + 15.0, min(ys) - 15.0, max(ys) + 15.0)
+            self.server.scene.add_icosphere("/start", radius=1.0, color=(40, 160, 60),
+                                            position=(scenario.start.x, scenario.start.y, 0.0))
+        self.set_time(self.time_s)
+
+    def _draw_obstacles(self) -> None:
+        scene = self.server.scene
+        for node in self._obstacle_nodes:
+            node.remove()
+        self._obstacle_nodes, self._discs = [], []
+        for i, o in enumerate(self.scenario.obstacles):
+            r = self.scenario.inflated_radius(o)
+            v, f = oblique_cylinder(o.x, o.y, r, o.vx, o.vy, self.horizon_s, self.time_scale)
+            color = (230, 120, 60) if o.moving else (150, 90, 60)
+            self._obstacle_nodes.append(scene.add_mesh_simple(
+                f"/obstacles/{i}", v, f, color=color, opacity=0.45, side="double"))
+            dv, df = oblique_cylinder(o.x, o.y, r, 0.0, 0.0, DISC_HEIGHT_M, 1.0)
+            disc = scene.add_mesh_simple(f"/time/obstacle_{i}", dv, df, color=color,
+                                         opacity=0.9, side="double")
+            self._obstacle_nodes.append(disc)
+            self._discs.append((disc, o.vx, o.vy))
 
     def show_plan(self, plan: dict[str, Any]) -> None:
-        """The planned path in (x, y, t)."""
+        """The planned path in (x, y, t); obstacles are redrawn over the plan's duration."""
         if self.server is None:
             return
-        pts = np.array([[w["x"], w["y"], w["t"] * self.time_scale] for w in plan["waypoints"]])
+        wps = plan["waypoints"]
+        pts = np.array([[w["x"], w["y"], w["t"] * self.time_scale] for w in wps])
         with self._lock:
-            self.server.scene.add_line_segments("/plan", polyline_segments(pts),
-                                                colors=(40, 90, 220), thickness=0.3)
+            self.waypoints = wps
+            self.server.scene.add_line_segments("/plan/path", polyline_segments(pts),
+                                                colors=PLAN_COLOR, thickness=0.3)
+            self._set_horizon(max(math.ceil(wps[-1]["t"] * HORIZON_MARGIN), 10))
+            if self.scenario is not None:
+                self._draw_obstacles()
+        self.set_time(min(self.time_s, self.horizon_s))
 
     def clear_track(self) -> None:
+        """A new run: no real path yet, and the time follows the run again."""
         with self._lock:
             self._track = []
             if self.server is not None:
-                self.server.scene.add_frame("/track", show_axes=False)
+                self.server.scene.add_frame("/track/path", show_axes=False)
+        self._set_follow(True)
+        self.set_time(0.0)
 
     def add_track_point(self, x: float, y: float, t: float) -> None:
         """One real position at mission time t; the line is redrawn at most twice a second."""
@@ -124,5 +303,10 @@ class ThreeDView:
                 return
             self._track_drawn_at = now
             pts = np.array(self._track)
-        self.server.scene.add_line_segments("/track", polyline_segments(pts),
-                                            colors=(220, 40, 40), thickness=0.3)
+            self.server.scene.add_line_segments("/track/path", polyline_segments(pts),
+                                                colors=TRACK_COLOR, thickness=0.3)
+            if t > self.horizon_s:  # a run longer than the plan: let the slider reach it
+                self._set_horizon(math.ceil(t))
+            follow = self.follow_live
+        if follow:
+            self.set_time(min(t, self.horizon_s))

@@ -1,0 +1,61 @@
+"""The operator console: static files from frontend/ served beside the API.
+
+`/` is frontend/index.html, `/assets/` is frontend/app/ (the console's own
+modules and CSS) and `/vendor/NAME/` is the `dist/` folder of an npm package
+installed in frontend/node_modules, so the console needs no internet on a
+ship. The folder is the `frontend_dir` setting (USV_STATION_FRONTEND_DIR),
+by default frontend/ of the source checkout this package runs from.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from fastapi import FastAPI
+from fastapi.responses import FileResponse, PlainTextResponse, Response
+from fastapi.staticfiles import StaticFiles
+
+VENDOR = {"leaflet": "leaflet/dist", "uplot": "uplot/dist"}
+REQUIRED = ("index.html", "app/main.js", "node_modules/leaflet/dist/leaflet-src.esm.js",
+            "node_modules/uplot/dist/uPlot.esm.js")
+NO_CACHE = {"Cache-Control": "no-cache"}
+
+
+def default_frontend_dir() -> Path:
+    """frontend/ beside backend/ in a source checkout (editable install)."""
+    return Path(__file__).resolve().parents[3] / "frontend"
+
+
+def frontend_problem(frontend_dir: Path) -> str | None:
+    """Why the console cannot be served from `frontend_dir`, or None when it can."""
+    missing = [name for name in REQUIRED if not (frontend_dir / name).is_file()]
+    if not missing:
+        return None
+    hint = ("run `npm ci` in frontend/ (`make setup` does)" if (frontend_dir / "index.html")
+            .is_file() else "set USV_STATION_FRONTEND_DIR to the console's folder")
+    return (f"operator console not available: {', '.join(missing)} missing under "
+            f"{frontend_dir}; {hint}")
+
+
+def mount_console(app: FastAPI, frontend_dir: Path) -> None:
+    """Serve the console at `/`; when its files are missing, `/` answers 503 with the reason.
+
+    Mount after the API routes: the mounts only take /assets and /vendor.
+    """
+    problem = frontend_problem(frontend_dir)
+    if problem is not None:
+        @app.get("/", include_in_schema=False)
+        async def console_missing() -> Response:
+            return PlainTextResponse(problem + "\n", status_code=503)
+        return
+
+    index = frontend_dir / "index.html"
+
+    @app.get("/", include_in_schema=False)
+    async def console_index() -> FileResponse:
+        return FileResponse(index, media_type="text/html", headers=NO_CACHE)
+
+    app.mount("/assets", StaticFiles(directory=frontend_dir / "app"), name="assets")
+    for name, sub in VENDOR.items():
+        app.mount(f"/vendor/{name}", StaticFiles(directory=frontend_dir / "node_modules" / sub),
+                  name=f"vendor-{name}")

@@ -1,0 +1,97 @@
+"""The 3D (x, y, t) view: geometry helpers and the viser GUI controls on a real viser server."""
+
+import math
+import time
+
+import numpy as np
+import pytest
+
+from usvstation.scenario import load_scenario
+from usvstation.viz.view import (
+    CIRCLE_SIDES,
+    LAYERS,
+    ThreeDView,
+    oblique_cylinder,
+    position_at,
+    track_position_at,
+)
+
+WAYPOINTS = [{"x": 80.0, "y": 10.0, "t": 0.0}, {"x": 40.0, "y": 0.0, "t": 20.0},
+             {"x": 0.0, "y": 0.0, "t": 30.0}]
+
+
+def test_moving_obstacle_leans_along_its_velocity():
+    v, f = oblique_cylinder(10.0, 5.0, 2.0, 0.5, -0.25, 40.0, 1.0)
+    bottom, top = v[:CIRCLE_SIDES], v[CIRCLE_SIDES:2 * CIRCLE_SIDES]
+    assert np.allclose(bottom[:, 2], 0.0) and np.allclose(top[:, 2], 40.0)
+    # the top circle is the bottom one moved by v * t: eq. 8's centre (x + vx t, y + vy t)
+    assert np.allclose(top[:, :2] - bottom[:, :2], [20.0, -10.0], atol=1e-5)
+    assert np.allclose(np.hypot(*(bottom[:, :2] - [10.0, 5.0]).T), 2.0, atol=1e-5)
+    assert f.max() < len(v) and len(f) == 4 * CIRCLE_SIDES
+
+
+def test_planned_position_is_linear_in_time():
+    assert position_at(WAYPOINTS, -1.0) == (80.0, 10.0)
+    assert position_at(WAYPOINTS, 10.0) == pytest.approx((60.0, 5.0))
+    assert position_at(WAYPOINTS, 25.0) == pytest.approx((20.0, 0.0))
+    assert position_at(WAYPOINTS, 99.0) == (0.0, 0.0)
+
+
+def test_real_position_is_the_last_report_at_or_before_t():
+    track = [(80.0, 10.0, 0.0), (79.0, 9.5, 0.2), (78.0, 9.0, 0.4)]
+    assert track_position_at([], 1.0) is None
+    assert track_position_at(track, -0.1) is None
+    assert track_position_at(track, 0.3) == (79.0, 9.5)
+    assert track_position_at(track, 5.0) == (78.0, 9.0)
+
+
+@pytest.fixture
+def view():
+    v = ThreeDView(port=0)
+    v.start()
+    yield v
+    v.stop()
+
+
+def test_layers_toggle_from_code_and_gui(view):
+    assert set(view.layers) == set(LAYERS)
+    view.set_layer("obstacles", False)
+    assert view.layers["obstacles"].visible is False
+    assert view.gui["layer:obstacles"].value is False
+    view.gui["layer:plan"].value = False  # as when the operator unticks the box
+    assert view.layers["plan"].visible is False and view.layers["track"].visible is True
+    with pytest.raises(ValueError, match="unknown layer 'sea'"):
+        view.set_layer("sea", True)
+
+
+def test_plan_sets_the_horizon_and_scrubbing_moves_the_time_plane(view):
+    scenario = load_scenario("case1")
+    view.show_scenario(scenario)
+    view.show_plan({"waypoints": WAYPOINTS})
+    assert view.horizon_s == math.ceil(30.0 * 1.2)
+    assert view.gui["time"].max == view.horizon_s
+    view.gui["time"].value = 10.0  # the operator drags the slider
+    assert view.time_s == 10.0 and view.follow_live is False
+    assert view.gui["readout"].content.splitlines()[1].startswith("planned: x 60.0 m, y 5.0 m")
+    moving = [i for i, o in enumerate(scenario.obstacles) if o.moving]
+    disc, vx, vy = view._discs[moving[0]]
+    assert tuple(disc.position) == pytest.approx((vx * 10.0, vy * 10.0, 10.0))
+    assert view._plane.position[2] == pytest.approx(10.0)
+
+
+def test_live_track_moves_the_time_when_following(view):
+    view.show_scenario(load_scenario("case1"))
+    view.show_plan({"waypoints": WAYPOINTS})
+    view.gui["follow"].value = False  # left unticked after the last run
+    view.clear_track()  # a new run follows again
+    assert view.follow_live is True and view.gui["follow"].value is True
+    for i in range(3):
+        view.add_track_point(80.0 - i, 10.0, 2.0 * i)
+        time.sleep(0.55)  # past the redraw interval: each point redraws
+    assert view.time_s == pytest.approx(4.0)
+    assert "real: x 78.0 m, y 10.0 m" in view.gui["readout"].content
+    view.gui["follow"].value = False
+    view.add_track_point(70.0, 10.0, 12.0)
+    time.sleep(0.55)
+    view.add_track_point(69.0, 10.0, 13.0)
+    assert view.time_s == pytest.approx(4.0)
