@@ -12,13 +12,12 @@ from pathlib import Path
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from protocol_helpers import any_message
 
 from usvstation.link import codec
 from usvstation.link import messages as m
 
 ROOT = Path(__file__).resolve().parents[2]
-RANGES = {"B": (0, 0xFF), "H": (0, 0xFFFF), "I": (0, 0xFFFFFFFF), "b": (-0x80, 0x7F),
-          "h": (-0x8000, 0x7FFF), "i": (-0x80000000, 0x7FFFFFFF)}
 
 
 def _generator():
@@ -27,18 +26,6 @@ def _generator():
     sys.modules["usv_generate"] = mod
     spec.loader.exec_module(mod)
     return mod
-
-
-def message_strategy(cls: type) -> st.SearchStrategy:
-    ints = [st.integers(*RANGES[c]) for c in cls.FORMAT[1:]]
-    if cls.TEXT_MAX:
-        text = st.text(max_size=cls.TEXT_MAX).filter(
-            lambda s: len(s.encode("utf-8")) <= cls.TEXT_MAX)
-        return st.tuples(*ints, text).map(cls._make)
-    return st.tuples(*ints).map(cls._make)
-
-
-any_message = st.sampled_from(m.MESSAGE_TYPES).flatmap(message_strategy)
 
 
 def test_crc16_is_ccitt_false_and_crc32_is_ieee():

@@ -9,9 +9,17 @@ from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 from typing import Annotated, Any, Literal
 
-from fastapi import Depends, FastAPI, HTTPException, Query, WebSocket, WebSocketDisconnect
+from fastapi import (
+    Depends,
+    FastAPI,
+    HTTPException,
+    Query,
+    Request,
+    WebSocket,
+    WebSocketDisconnect,
+)
 from fastapi.middleware.cors import CORSMiddleware
-from fastapi.responses import StreamingResponse
+from fastapi.responses import JSONResponse, StreamingResponse
 from pydantic import BaseModel, ConfigDict, Field
 
 from usvstation import __version__
@@ -81,6 +89,11 @@ def create_app(station: Station) -> FastAPI:
         app.add_middleware(CORSMiddleware, allow_origins=station.settings.cors_origins,
                            allow_methods=["*"], allow_headers=["*"])
 
+    @app.exception_handler(BoatError)
+    async def boat_refused(_: Request, exc: BoatError) -> JSONResponse:
+        """A request the boat service refuses: its status (404, 409, 503, 504) and reason."""
+        return JSONResponse({"detail": str(exc)}, status_code=exc.status)
+
     @app.get("/api/health", tags=["station"])
     async def health() -> dict[str, Any]:
         return {"version": __version__, **station.health()}
@@ -117,10 +130,7 @@ def create_app(station: Station) -> FastAPI:
               responses={409: {"description": "plan not done, no origin, or a mission running"},
                          503: {"description": "the boat link is down"}})
     async def post_mission(req: MissionRequest) -> dict[str, Any]:
-        try:
-            return await station.boat.create_mission(req.plan_id)
-        except BoatError as exc:
-            raise HTTPException(exc.status, detail=str(exc)) from None
+        return await station.boat.create_mission(req.plan_id)
 
     @app.get("/api/missions", tags=["boat"])
     async def list_missions() -> list[dict[str, Any]]:
@@ -138,10 +148,7 @@ def create_app(station: Station) -> FastAPI:
                          503: {"description": "the boat link is down"},
                          504: {"description": "the boat did not acknowledge in time"}})
     async def boat_command(req: CommandRequest) -> dict[str, Any]:
-        try:
-            return await station.boat.command(req.command)
-        except BoatError as exc:
-            raise HTTPException(exc.status, detail=str(exc)) from None
+        return await station.boat.command(req.command)
 
     @app.get("/api/boat", tags=["boat"])
     async def boat() -> dict[str, Any]:
