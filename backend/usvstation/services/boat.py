@@ -123,9 +123,12 @@ class BoatService:
     # --- lifecycle -------------------------------------------------------------------------
     async def start(self, scenario: Scenario) -> None:
         for mission in await asyncio.to_thread(self.store.missions):
-            if mission["state"] in ("uploading", "active"):
-                mission.update(state="failed" if mission["state"] == "uploading" else "aborted",
-                               error="the station restarted")
+            if mission["state"] == "uploading":
+                mission.update(state="failed", error="the station restarted during the upload")
+            elif mission["state"] == "active":
+                mission.update(state="aborted", error=(
+                    "the station restarted while this mission ran; the boat keeps its own "
+                    "state (see /api/boat) and holds station if the link was lost"))
                 await asyncio.to_thread(self.store.save_mission, mission)
             self.missions[mission["id"]] = mission
         await asyncio.to_thread(self.store.close_stale_runs)
