@@ -129,7 +129,10 @@ class BoatService:
                 mission.update(state="aborted", error=(
                     "the station restarted while this mission ran; the boat keeps its own "
                     "state (see /api/boat) and holds station if the link was lost"))
-                await asyncio.to_thread(self.store.save_mission, mission)
+            else:
+                self.missions[mission["id"]] = mission
+                continue
+            await asyncio.to_thread(self.store.save_mission, mission)
             self.missions[mission["id"]] = mission
         await asyncio.to_thread(self.store.close_stale_runs)
         if scenario.origin is not None:
