@@ -122,18 +122,7 @@ class BoatService:
 
     # --- lifecycle -------------------------------------------------------------------------
     async def start(self, scenario: Scenario) -> None:
-        for mission in await asyncio.to_thread(self.store.missions):
-            if mission["state"] == "uploading":
-                mission.update(state="failed", error="the station restarted during the upload")
-            elif mission["state"] == "active":
-                mission.update(state="aborted", error=(
-                    "the station restarted while this mission ran; the boat keeps its own "
-                    "state (see /api/boat) and holds station if the link was lost"))
-            else:
-                self.missions[mission["id"]] = mission
-                continue
-            await asyncio.to_thread(self.store.save_mission, mission)
-            self.missions[mission["id"]] = mission
+        self.missions = await asyncio.to_thread(recover_missions, self.store)
         await asyncio.to_thread(self.store.close_stale_runs)
         if scenario.origin is not None:
             o = scenario.origin
@@ -383,6 +372,22 @@ class BoatService:
     async def _save(self, record: dict[str, Any]) -> None:
         await asyncio.to_thread(self.store.save_mission, record)
         self.hub.publish("mission", _public(record))
+
+
+def recover_missions(store: Store) -> dict[str, dict[str, Any]]:
+    """Missions from the database; those a restart interrupted are closed with the reason."""
+    missions = {}
+    for mission in store.missions():
+        if mission["state"] == "uploading":
+            mission.update(state="failed", error="the station restarted during the upload")
+            store.save_mission(mission)
+        elif mission["state"] == "active":
+            mission.update(state="aborted", error=(
+                "the station restarted while this mission ran; the boat keeps its own "
+                "state (see /api/boat) and holds station if the link was lost"))
+            store.save_mission(mission)
+        missions[mission["id"]] = mission
+    return missions
 
 
 def telemetry_row(t: m.Telemetry, frame: RampFrame | None, run: int | None) -> dict[str, Any]:
