@@ -2,55 +2,29 @@
 
 from __future__ import annotations
 
-import os
-import re
 import signal
-import subprocess
-import sys
 import time
 from pathlib import Path
 
 import httpx
 
-SCRIPT = Path(sys.executable).parent / "usv-station"
+from usvstation.serveproc import ServeProcess
+
 TOKEN = "e2e-token-0123456789abcdef"
 
 
-class StationProcess:
+class StationProcess(ServeProcess):
+    """A running station with an authenticated HTTP client and polling helpers."""
+
     def __init__(self, data_dir: Path, *args: str, token: str = TOKEN,
                  env: dict[str, str] | None = None) -> None:
-        self.data_dir, self.token = data_dir, token
-        self.log = data_dir.parent / f"{data_dir.name}-serve.log"
-        cmd = [str(SCRIPT), "serve", "--port", "0", "--viser-port", "0", "--data-dir",
-               str(data_dir), "--token", token, *args]
-        self._log = self.log.open("w")
-        self.proc = subprocess.Popen(cmd, stdout=self._log, stderr=subprocess.STDOUT,
-                                     env={**os.environ, "PYTHONUNBUFFERED": "1", **(env or {})})
-        self.url = self._wait_for("console", r"console (http://[^/]+)/")
-        self.viser_url = self._wait_for("3D view", r"3D view (http://\S+)/")
+        super().__init__(data_dir, *args, token=token, env=env)
         self.client = httpx.Client(base_url=self.url, timeout=30,
                                    headers={"Authorization": f"Bearer {token}"})
 
-    def _wait_for(self, what: str, pattern: str, timeout: float = 60.0) -> str:
-        deadline = time.monotonic() + timeout
-        while time.monotonic() < deadline:
-            found = re.search(pattern, self.log.read_text())
-            if found:
-                return found.group(1)
-            if self.proc.poll() is not None:
-                raise RuntimeError(f"serve exited: {self.log.read_text()[-2000:]}")
-            time.sleep(0.05)
-        raise RuntimeError(f"no {what} URL from serve: {self.log.read_text()[-2000:]}")
-
     def stop(self, sig: int = signal.SIGTERM, timeout: float = 10.0) -> float:
-        """Send `sig`; returns the seconds until the process exited."""
         self.client.close()
-        t0 = time.monotonic()
-        if self.proc.poll() is None:
-            self.proc.send_signal(sig)
-            self.proc.wait(timeout)
-        self._log.close()
-        return time.monotonic() - t0
+        return super().stop(sig, timeout)
 
     def wait_plan(self, plan_id: str, timeout: float = 30.0) -> dict:
         return self.wait(f"/api/plans/{plan_id}", "status", ("queued", "running"), timeout)

@@ -13,11 +13,7 @@ from __future__ import annotations
 
 import asyncio
 import datetime as dt
-import os
-import re
 import statistics
-import subprocess
-import sys
 import tempfile
 import time
 from collections.abc import Callable
@@ -29,6 +25,7 @@ import numpy as np
 
 from usvstation.bench.planner import machine_info
 from usvstation.bench.scenarios import random_transit
+from usvstation.serveproc import ServeProcess
 
 TOKEN = "bench-token-0123456789abcdef"
 
@@ -40,34 +37,15 @@ def _percentiles(values: list[float]) -> dict[str, float]:
             "max_ms": round(float(arr.max()), 2)}
 
 
-class Station:
+class Station(ServeProcess):
     """`usv-station serve` on ephemeral ports in a temporary data dir."""
 
     def __init__(self, env: dict[str, str]) -> None:
         self.tmp = tempfile.TemporaryDirectory(prefix="usv-bench-")
-        self.log = Path(self.tmp.name) / "serve.log"
-        exe = Path(sys.executable).parent / "usv-station"
-        self._log = self.log.open("w")
-        self.proc = subprocess.Popen(
-            [str(exe), "serve", "--port", "0", "--viser-port", "0", "--token", TOKEN,
-             "--data-dir", str(Path(self.tmp.name) / "data")],
-            stdout=self._log, stderr=subprocess.STDOUT,
-            env={**os.environ, "PYTHONUNBUFFERED": "1", **env},
-        )
-        deadline = time.monotonic() + 60
-        while not (found := re.search(r"console (http://[^/]+)/", self.log.read_text())):
-            if self.proc.poll() is not None or time.monotonic() > deadline:
-                raise RuntimeError(f"serve did not start: {self.log.read_text()[-2000:]}")
-            time.sleep(0.05)
-        self.url = found.group(1)
+        super().__init__(Path(self.tmp.name) / "data", token=TOKEN, env=env)
 
     def close(self) -> None:
-        self.proc.terminate()
-        try:
-            self.proc.wait(10)
-        except subprocess.TimeoutExpired:
-            self.proc.kill()
-        self._log.close()
+        self.stop()
         self.tmp.cleanup()
 
 

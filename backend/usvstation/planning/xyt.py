@@ -51,10 +51,6 @@ class ObstacleField:
     def static(self) -> np.ndarray:
         return ~np.any(self.velocity != 0.0, axis=1)
 
-    def centres_at(self, t: float) -> np.ndarray:
-        """Circle centres at time t (eq. 8)."""
-        return self.centre + self.velocity * t
-
     def hits(
         self, x0: np.ndarray, y0: np.ndarray, t0: np.ndarray,
         x1: np.ndarray, y1: np.ndarray, t1: np.ndarray, inflated: bool = True,
