@@ -84,6 +84,12 @@ def build_parser() -> argparse.ArgumentParser:
     serve.add_argument("--viser-port", type=int, help="3D view port (default 8080)")
     serve.add_argument("--sim-speed", type=float,
                        help="simulated boat time runs this many times faster (default 1)")
+    serve.add_argument("--nmea", action="append", metavar="URL",
+                       help="ship sensors, NMEA 0183 and AIS (repeatable): udp://0.0.0.0:10110, "
+                       "tcp://HOST:PORT, serial:///dev/ttyUSB0?baud=38400 or a device path")
+    serve.add_argument("--replan", choices=["auto", "confirm", "off"],
+                       help="on a warning: re-plan and swap (auto), propose a re-plan for the "
+                       "operator to confirm (confirm, default) or only alert (off)")
 
     sim = sub.add_parser(
         "sim", help="run the simulated boat on a serial port",
@@ -212,7 +218,7 @@ def _cmd_serve(args: argparse.Namespace) -> int:
     from usvstation.scenario import format_validation_error
 
     flags = {k: getattr(args, k) for k in ("host", "port", "link", "baud", "data_dir", "token",
-                                           "viser_port", "sim_speed")
+                                           "viser_port", "sim_speed", "nmea", "replan")
              if getattr(args, k) is not None}
     try:
         settings = Settings(**flags)
