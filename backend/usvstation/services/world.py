@@ -84,7 +84,7 @@ class WorldService:
     # --- inputs ----------------------------------------------------------------------------
     def set_scenario(self, scenario: Scenario) -> None:
         """Anchor the ramp at the scenario origin; its obstacles become `manual` tracks."""
-        ms = getattr(scenario, "mother_ship", None)
+        ms = scenario.mother_ship
         self.world.lever_arm = ms.lever_arm if ms is not None else LeverArm()
         if scenario.origin is None:
             return
