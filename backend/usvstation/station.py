@@ -29,7 +29,8 @@ class Station:
         self.plans = PlanService(self.store, self.hub, settings.plan_workers)
         self.view = ThreeDView(settings.host, settings.viser_port)
         self.boat = BoatService(settings, self.store, self.hub, self.plans, self.view)
-        self.world = WorldService(self.hub, settings.nmea)
+        self.world = WorldService(self.hub, settings.nmea, simulate=settings.link == "sim",
+                                  sim_speed=settings.sim_speed)
 
     async def start(self) -> None:
         self.store.start()
@@ -59,7 +60,7 @@ class Station:
         await asyncio.to_thread(self.store.set_setting, "scenario",
                                 scenario.model_dump(mode="json"))
         self.view.show_scenario(scenario)
-        self.world.set_scenario(scenario)
+        await self.world.use_scenario(scenario)
         self.hub.publish("scenario", {"name": scenario.name})
 
     def health(self) -> dict[str, Any]:

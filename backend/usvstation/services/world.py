@@ -20,6 +20,7 @@ from usvstation.scenario import Scenario
 from usvstation.services.hub import LiveHub
 from usvstation.shipinputs.decode import SentenceDecoder, apply_reports
 from usvstation.shipinputs.readers import Source, open_udp, parse_source, run_stream_source
+from usvstation.sim.sea import SimulatedSea
 from usvstation.store.db import utc_now
 from usvstation.world.model import World, enu_to_compass
 from usvstation.world.ships import LeverArm
@@ -31,9 +32,13 @@ PUBLISH_HZ = 2.0
 class WorldService:
     """Owns the world model and the ship-input sources."""
 
-    def __init__(self, hub: LiveHub, sources: list[str],
-                 clock: Callable[[], float] = time.monotonic) -> None:
+    def __init__(self, hub: LiveHub, sources: list[str], *, simulate: bool = False,
+                 sim_speed: float = 1.0, clock: Callable[[], float] = time.monotonic) -> None:
         self.hub, self.clock = hub, clock
+        self.simulate, self.sim_speed = simulate, sim_speed
+        self.sea: SimulatedSea | None = None
+        self._sea_stop: asyncio.Event | None = None
+        self._sea_port: int | None = None
         self.sources: list[Source] = [parse_source(url) for url in sources]
         self.source_state: dict[str, dict[str, Any]] = {}
         self.world = World()
@@ -45,11 +50,33 @@ class WorldService:
 
     # --- lifecycle -------------------------------------------------------------------------
     async def start(self, scenario: Scenario | None) -> None:
-        if scenario is not None:
-            self.set_scenario(scenario)
         for source in self.sources:
             await self.add_source(source)
+        if scenario is not None:
+            await self.use_scenario(scenario)
         self._spawn(self._ticker())
+
+    async def use_scenario(self, scenario: Scenario) -> None:
+        """A new working scenario; with the simulated boat, its sea (if any) starts afresh."""
+        if self.simulate:
+            await self._stop_sea()
+            self.world = World(config=self.world.config)
+        self.set_scenario(scenario)
+        if self.simulate and scenario.origin is not None and (scenario.mother_ship is not None
+                                                              or scenario.traffic):
+            if self._sea_port is None:
+                self._sea_port = await self.add_source(Source("udp", "127.0.0.1", 0))
+            assert self._sea_port is not None
+            self.sea = SimulatedSea(scenario, ("127.0.0.1", self._sea_port),
+                                    sim_speed=self.sim_speed)
+            self._sea_stop = asyncio.Event()
+            self._spawn(self.sea.run(self._sea_stop))
+
+    async def _stop_sea(self) -> None:
+        if self._sea_stop is not None:
+            self._sea_stop.set()
+            await asyncio.sleep(0)
+        self.sea, self._sea_stop = None, None
 
     async def add_source(self, source: Source) -> int | None:
         """Open a source; for UDP returns the bound port (useful with port 0)."""
@@ -68,6 +95,7 @@ class WorldService:
         return None
 
     async def stop(self) -> None:
+        await self._stop_sea()
         for transport in self._transports:
             transport.close()
         for task in list(self._tasks):
