@@ -117,12 +117,12 @@ def test_dcpa_is_the_minimum_distance(px: float, py: float, wx: float, wy: float
 # --- hysteresis -----------------------------------------------------------------------------
 def test_level_of_enters_at_threshold_and_leaves_past_the_band() -> None:
     th = (1.0, 2.0, 3.0)
-    seq = [0.0, 3.0, 2.9, 2.6, 2.4, 1.0, 0.6, 0.4]
+    seq = [0.0, 3.0, 2.9, 2.6, 2.4, 1.6, 1.4, 0.6, 0.4]
     levels, cur = [], -1
     for value in seq:
         cur = level_of(value, th, cur, 0.5)
         levels.append(cur)
-    assert levels == [-1, 2, 2, 2, 1, 1, 0, -1]
+    assert levels == [-1, 2, 2, 2, 1, 1, 0, 0, -1]
 
 
 def clearance(value: float, tid: str = "ais:9", tcpa: float = -1.0) -> Assessment:
