@@ -10,8 +10,10 @@ from usvstation.config import Settings, resolve_token
 from usvstation.scenario import Scenario, bundled_scenario_dir, parse_scenario
 from usvstation.services.boat import BoatService
 from usvstation.services.hub import LiveHub
+from usvstation.services.monitor import MonitorService
 from usvstation.services.plans import PlanService
 from usvstation.services.world import WorldService
+from usvstation.store.alerts import AlertStore
 from usvstation.store.db import Store
 from usvstation.viz.view import ThreeDView
 
@@ -31,6 +33,9 @@ class Station:
         self.boat = BoatService(settings, self.store, self.hub, self.plans, self.view)
         self.world = WorldService(self.hub, settings.nmea, simulate=settings.link == "sim",
                                   sim_speed=settings.sim_speed)
+        self.alerts = AlertStore(self.store)
+        self.monitor = MonitorService(self.hub, self.alerts, self.world, self.boat, self.plans,
+                                      settings.replan)
 
     async def start(self) -> None:
         self.store.start()
@@ -43,6 +48,7 @@ class Station:
 
     async def stop(self) -> None:
         """Close the link, stop plan workers, flush telemetry; the boat is sent nothing."""
+        await self.monitor.stop()
         await self.world.stop()
         await self.boat.stop()
         await asyncio.to_thread(self.view.stop)
