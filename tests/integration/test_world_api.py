@@ -112,3 +112,6 @@ def test_udp_sentences_appear_in_api_world(station: StationProcess) -> None:
                                  TTM[1] * 1852 * math.cos(b))
     check("arpa:5", tlat, tlon, TTM[3] * KNOT, TTM[4])
     assert targets["arpa:5"]["source"] == "arpa" and targets["arpa:5"]["name"] == "TGT5"
+    ws = station.client.get("/api/world/scenario").json()
+    assert len(ws["scenario"]["obstacles"]) + len(ws["dropped"]) == len(world["targets"])
+    assert ws["scenario"]["name"] == "case1"

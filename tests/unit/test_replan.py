@@ -49,3 +49,18 @@ def test_replan_at_the_ramp_is_refused() -> None:
     a = assess(PLAN, BoatState(0.0, 0.0, -1.0, 0.0, 100.0), [], 1.2)
     with pytest.raises(ReplanImpossible, match=r"start\.x: the boat is at the ramp"):
         replan_scenario(load_scenario("case1"), a, [], speed=1.0)
+
+
+def test_world_scenario_takes_the_targets_and_the_apparent_current() -> None:
+    from usvstation.world.replan import world_scenario
+
+    base = load_scenario("case1")
+    far = TargetState("ais:1", 40.0, 30.0, 0.5, -1.0, 4.0)
+    at_ramp = TargetState("ais:2", 2.0, 0.0, 0.0, 0.0, 2.0)
+    sc, dropped = world_scenario(base, [far, at_ramp], frame_velocity=(0.0, 1.0))
+    assert dropped == ["ais:2"]
+    assert [(o.x, o.y, o.radius, o.vx, o.vy) for o in sc.obstacles] == [
+        (40.0, 30.0, 4.0, 0.5, -1.0)]
+    assert (sc.environment.current_speed, sc.environment.current_dir_deg) == pytest.approx(
+        (1.0, 270.0))
+    assert sc.start == base.start and sc.origin == base.origin

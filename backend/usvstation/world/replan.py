@@ -74,14 +74,7 @@ def replan_scenario(base: Scenario, a: Assessment, targets: list[TargetState],
             dropped.append(t.id)
             continue
         obstacles.append(Obstacle(x=ox, y=oy, radius=t.radius, vx=t.vx, vy=t.vy))
-    env = base.environment
-    c = math.radians(env.current_dir_deg)
-    cx = env.current_speed * math.cos(c) - frame_velocity[0]
-    cy = env.current_speed * math.sin(c) - frame_velocity[1]
-    environment = env.model_copy(update={
-        "current_speed": math.hypot(cx, cy),
-        "current_dir_deg": math.degrees(math.atan2(cy, cx)) % 360.0 if math.hypot(cx, cy)
-        else env.current_dir_deg})
+    environment = apparent_environment(base.environment, frame_velocity)
     planner = (base.planner.model_copy(update={"seed": seed}) if base.planner is not None
                else None)
     speed = min(max(speed, vessel.speed_min), vessel.speed_max)
@@ -90,7 +83,40 @@ def replan_scenario(base: Scenario, a: Assessment, targets: list[TargetState],
                                                   "planner", "name"}),
         "name": f"{base.name} (re-plan)"[:200],
         "start": Start(x=x, y=y, heading_deg=heading, speed=speed),
-        "obstacles": obstacles, "environment": Environment.model_validate(
-            environment.model_dump()), "planner": planner,
+        "obstacles": obstacles, "environment": environment, "planner": planner,
     }, strict=False)
     return scenario, dropped
+
+
+def apparent_environment(env: Environment, frame_velocity: tuple[float, float]
+                         ) -> Environment:
+    """The current seen in a ramp frame moving at `frame_velocity` (ramp axes, m/s)."""
+    c = math.radians(env.current_dir_deg)
+    cx = env.current_speed * math.cos(c) - frame_velocity[0]
+    cy = env.current_speed * math.sin(c) - frame_velocity[1]
+    speed = math.hypot(cx, cy)
+    return env.model_copy(update={
+        "current_speed": speed,
+        "current_dir_deg": math.degrees(math.atan2(cy, cx)) % 360.0 if speed > 1e-9
+        else env.current_dir_deg})
+
+
+def world_scenario(base: Scenario, targets: list[TargetState],
+                   frame_velocity: tuple[float, float] = (0.0, 0.0)) -> tuple[Scenario,
+                                                                               list[str]]:
+    """`base` planned against the world as it is now: its obstacles are the world's
+    targets (ramp frame, relative velocities; the `manual` ones are base's own obstacles)
+    and the ship's motion is an apparent current. Targets whose inflated circle holds the
+    start or the goal are left out and named."""
+    vessel = base.vessel
+    obstacles, dropped = [], []
+    for t in targets:
+        r_l = t.radius + vessel.length + vessel.compensation_radius
+        if math.hypot(base.start.x - t.x, base.start.y - t.y) < r_l \
+                or math.hypot(base.goal.x - t.x, base.goal.y - t.y) < r_l:
+            dropped.append(t.id)
+            continue
+        obstacles.append(Obstacle(x=t.x, y=t.y, radius=t.radius, vx=t.vx, vy=t.vy))
+    return base.model_copy(update={
+        "obstacles": obstacles,
+        "environment": apparent_environment(base.environment, frame_velocity)}), dropped
