@@ -50,6 +50,7 @@ from usvstation.world.replan import (
 
 log = logging.getLogger(__name__)
 MONITOR_EVERY_S = 0.5
+ASSESS_MIN_INTERVAL_S = 0.1  # every frame up to 10 Hz (telemetry runs at 5 Hz of boat time)
 DEFAULT_TIME_MARGIN_S = 5.0
 NO_HOT_SWAP = ("the boat link has no hot swap (usv-link 2, BoatService.swap_mission): "
                "the re-plan is kept as a plan; hold, abort and upload it to use it")
@@ -75,6 +76,7 @@ class MonitorService:
         self.last_row: dict[str, Any] | None = None
         self.frames = 0
         self._published_at = -1e9
+        self._assessed_at = -1e9
         self._tasks: set[asyncio.Task] = set()
         hub.observers.append(self.on_event)
 
@@ -138,9 +140,12 @@ class MonitorService:
                 return
             self.t0 = float(row["boat_time"])
         now = self.world.clock()
+        if now - self._assessed_at < ASSESS_MIN_INTERVAL_S:
+            return  # a sped-up simulation: the event loop is not spent on every frame
         pose = self.world.world.ramp(now)
         if pose is None:
             return
+        self._assessed_at = now
         frame = pose.frame
         bx, by = frame.to_ramp(row["lat"], row["lon"])
         ve, vn = compass_to_enu(float(row["speed"] or 0.0), float(row["course_deg"] or 0.0))
