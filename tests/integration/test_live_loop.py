@@ -4,6 +4,8 @@ monitor warns, a re-plan is proposed, the operator confirms it, and it is swappe
 
 from __future__ import annotations
 
+import csv
+import io
 import json
 import math
 import threading
@@ -133,6 +135,13 @@ def test_turning_target_warns_proposes_a_replan_and_confirm_swaps_it(station) ->
                       ).status_code == 401
         stored = c.get("/api/alerts", params={"run": warning["run_id"]}).json()
         assert any(a["id"] == warning["id"] and a["acknowledged"] for a in stored)
+        csv_rows = list(csv.DictReader(io.StringIO(c.get(
+            "/api/alerts/export", params={"run": warning["run_id"]}).text)))
+        assert [r["id"] for r in csv_rows] == [a["id"] for a in reversed(stored)]
+        lines = [json.loads(x) for x in c.get("/api/alerts/export", params={
+            "run": warning["run_id"], "format": "jsonl"}).text.splitlines()]
+        assert [x["record"] for x in lines] == ["alert"] * len(stored) + ["replan"]
+        assert lines[-1]["id"] == replan["id"]
     finally:
         done.set()
         listener.join(5)

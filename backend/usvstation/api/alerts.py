@@ -3,11 +3,15 @@
 from __future__ import annotations
 
 import asyncio
-from typing import Annotated, Any
+import csv
+import io
+import json
+from typing import Annotated, Any, Literal
 
-from fastapi import APIRouter, Depends, HTTPException, Path, Query, Request
+from fastapi import APIRouter, Depends, HTTPException, Path, Query, Request, Response
 
 from usvstation.api.auth import require_token
+from usvstation.store.alerts import ALERT_FIELDS
 
 router = APIRouter(tags=["alerts"])
 Auth = [Depends(require_token)]
@@ -24,6 +28,32 @@ async def list_alerts(
     target_id, run_id, acknowledged}; of one run with `run`."""
     station = request.app.state.station
     return await asyncio.to_thread(station.alerts.alerts, run, limit)
+
+
+@router.get("/api/alerts/export")
+async def export_alerts(
+    request: Request,
+    run: Annotated[int | None, Query(ge=1, le=2**63 - 1)] = None,
+    format: Literal["csv", "jsonl"] = "csv",
+) -> Response:
+    """The alerts (of one run with `run`) as a file, oldest first, and the run's re-plans
+    (jsonl only, lines with "record": "replan")."""
+    station = request.app.state.station
+    rows = list(reversed(await asyncio.to_thread(station.alerts.alerts, run, 1_000_000)))
+    name = f"alerts-run-{run}" if run is not None else "alerts"
+    if format == "csv":
+        out = io.StringIO()
+        writer = csv.DictWriter(out, fieldnames=list(ALERT_FIELDS), lineterminator="\n")
+        writer.writeheader()
+        writer.writerows(rows)
+        body, media = out.getvalue(), "text/csv"
+    else:
+        replans = await asyncio.to_thread(station.alerts.replans, run)
+        body = "".join(json.dumps({"record": "alert", **r}) + "\n" for r in rows) + "".join(
+            json.dumps({"record": "replan", **r}) + "\n" for r in replans)
+        media = "application/x-ndjson"
+    return Response(body, media_type=media, headers={
+        "Content-Disposition": f'attachment; filename="{name}.{format}"'})
 
 
 @router.post("/api/alerts/{alert_id}/ack", dependencies=Auth,
