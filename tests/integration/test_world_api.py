@@ -115,3 +115,40 @@ def test_udp_sentences_appear_in_api_world(station: StationProcess) -> None:
     ws = station.client.get("/api/world/scenario").json()
     assert len(ws["scenario"]["obstacles"]) + len(ws["dropped"]) == len(world["targets"])
     assert ws["scenario"]["name"] == "case1"
+
+
+def test_simulated_sea_moves_the_ramp_in_api_world(tmp_path) -> None:
+    """With the simulated boat, a scenario's mother ship under way moves the ramp."""
+    from usvstation.scenario import load_scenario
+
+    st = StationProcess(tmp_path / "data")
+    try:
+        base = load_scenario("case1").model_dump(mode="json")
+        sc = {**base, "mother_ship": {"speed": 1.5, "course_deg": 270.0,
+                                      "lever_arm": {"forward": -30.0}}}
+        assert st.client.put("/api/scenario", json=sc).status_code == 200
+        deadline = time.monotonic() + 30
+        while time.monotonic() < deadline:
+            w1 = st.client.get("/api/world").json()
+            if w1["own_ship"] and w1["own_ship"]["speed"]:
+                break
+            time.sleep(0.05)
+        time.sleep(2.0)
+        w2 = st.client.get("/api/world").json()
+    finally:
+        st.stop()
+    r1, r2 = w1["ramp"], w2["ramp"]
+    assert r1["source"] == "own_ship"
+    assert r2["ramp_bearing_deg"] == pytest.approx(90.0, abs=0.05)  # stern ramp of a ship
+    assert r2["speed"] == pytest.approx(1.5, abs=0.01)  # heading 270 (VTG: 0.01 kn)
+    assert r2["course_deg"] == pytest.approx(270.0, abs=0.1)
+    assert (r2["vx"], r2["vy"]) == pytest.approx((-1.5, 0.0), abs=0.01)
+    # it moved west along the ramp axis, by speed x time, within a metre
+    x, y = RampFrame(r1["lat"], r1["lon"], 90.0).to_ramp(r2["lat"], r2["lon"])
+    import datetime as dt
+
+    elapsed = (dt.datetime.fromisoformat(w2["time"]) - dt.datetime.fromisoformat(w1["time"])
+               ).total_seconds()
+    assert float(y) == pytest.approx(0.0, abs=0.5)
+    assert float(x) == pytest.approx(-1.5 * elapsed, abs=1.0)
+    assert w2["stats"]["bad"] == 0
