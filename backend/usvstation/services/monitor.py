@@ -106,7 +106,9 @@ class MonitorService:
         """A run started: monitor its plan; the scenario's obstacles start where the plan
         assumed them (their t = 0 is the plan's start)."""
         mission = self.boat.missions.get(mission_id or "")
-        job = self.plans.get(mission["plan_id"]) if mission else None
+        plan_id = mission.get("plan_id") if isinstance(mission, dict) \
+            else getattr(mission, "plan_id", None)  # a dict here, a record with usv-link 2
+        job = self.plans.get(plan_id) if plan_id else None
         if not job or not job.get("plan"):
             return
         self.use_plan(job, run)
