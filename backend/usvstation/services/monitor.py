@@ -52,6 +52,7 @@ log = logging.getLogger(__name__)
 MONITOR_EVERY_S = 0.5
 ASSESS_MIN_INTERVAL_S = 0.1  # every frame up to 10 Hz (telemetry runs at 5 Hz of boat time)
 DEFAULT_TIME_MARGIN_S = 5.0
+OWN_SHIP_AGE_S = (5.0, 10.0, 30.0)  # a silent own-ship position: advisory, caution, warning
 NO_HOT_SWAP = ("the boat link has no hot swap (usv-link 2, BoatService.swap_mission): "
                "the re-plan is kept as a plan; hold, abort and upload it to use it")
 
@@ -162,7 +163,15 @@ class MonitorService:
                    (float(fvx), float(fvy)))
         self.frames += 1
         self.last_assessment, self.last_row = a, row
-        for event in self.tracker.update(a):
+        events = self.tracker.update(a)
+        own = self.world.world.own
+        if pose.moving and own.t_fix is not None:
+            age = now - own.t_fix
+            stale = self.tracker.step(
+                "own_ship_stale", None, age, OWN_SHIP_AGE_S, 1.0,
+                f"own ship position {age:.0f} s old: the ramp pose is dead-reckoned")
+            events += [stale] if stale else []
+        for event in events:
             record = self.raise_alert(event)
             if event.level == "warning":
                 self.replan.on_warning(record, a, targets, boat, (float(fvx), float(fvy)))

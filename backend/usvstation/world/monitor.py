@@ -226,9 +226,10 @@ class AlertTracker:
     config: MonitorConfig = field(default_factory=MonitorConfig)
     levels: dict[tuple[str, str | None], int] = field(default_factory=dict)
 
-    def _step(self, kind: str, target: str | None, value: float,
+    def step(self, kind: str, target: str | None, value: float,
               thresholds: tuple[float, float, float], hysteresis: float,
               message: str) -> AlertEvent | None:
+        """One condition's value against its three thresholds; an event if its level rose."""
         key = (kind, target)
         old = self.levels.get(key, -1)
         new = level_of(value, thresholds, old, hysteresis)
@@ -250,7 +251,7 @@ class AlertTracker:
         for t in a.targets:
             seen.add(t.id)
             what = "contact" if t.min_clearance_m <= 0 else f"{t.min_clearance_m:.1f} m"
-            events.append(self._step(
+            events.append(self.step(
                 "clearance", t.id, -t.min_clearance_m, (-4 * m, -2 * m, -m),
                 c.clearance_hysteresis_m,
                 f"{t.id}: predicted clearance {what} in {t.t_min_s:.0f} s "
@@ -258,7 +259,7 @@ class AlertTracker:
             # on the present course; a warning only if the plan does not pass it clear
             on_course = 0.0 < t.tcpa_s < c.horizon_s
             top = -m if t.min_clearance_m < 2 * m else math.inf
-            events.append(self._step(
+            events.append(self.step(
                 "collision_course", t.id, -t.dcpa_m if on_course else -math.inf,
                 (-6 * m, -3 * m, top), c.clearance_hysteresis_m,
                 f"{t.id}: on a collision course, DCPA {t.dcpa_m:.1f} m in {t.tcpa_s:.0f} s "
@@ -266,11 +267,11 @@ class AlertTracker:
         for key in [k for k in self.levels if k[1] is not None and k[1] not in seen]:
             del self.levels[key]  # the target is gone
         tm = c.time_margin_s
-        events.append(self._step(
+        events.append(self.step(
             "slip", None, abs(a.slip_s), (0.25 * tm, 0.5 * tm, tm), c.slip_hysteresis_s,
             f"schedule slip {a.slip_s:+.1f} s ({'behind' if a.slip_s > 0 else 'ahead'}; "
             f"time margin {tm:.1f} s)"))
-        events.append(self._step(
+        events.append(self.step(
             "cross_track", None, a.cross_track_m, c.cross_track_m,
             c.cross_track_hysteresis_m, f"cross-track {a.cross_track_m:.1f} m off the plan"))
         return [e for e in events if e is not None]
