@@ -149,3 +149,35 @@ def test_turning_target_warns_proposes_a_replan_and_confirm_swaps_it(station) ->
     assert {"world", "alert", "monitor", "replan"} <= kinds
     pushed = [e["data"] for e in events if e["type"] == "alert"]
     assert any(a["id"] == warning["id"] for a in pushed)
+
+
+@pytest.mark.parametrize("policy", ["auto", "off"])
+def test_replan_policies_auto_and_off(tmp_path, policy: str) -> None:
+    st = StationProcess(tmp_path / "data", "--sim-speed", "5", "--replan", policy)
+    c = st.client
+    try:
+        assert c.put("/api/scenario", json=scenario()).status_code == 200
+        poll(lambda: any(t["id"] == TARGET for t in c.get("/api/world").json()["targets"]),
+             30, "the target")
+        job = st.wait_plan(c.post("/api/plans", json={"seed": 1}).json()["id"], 120)
+        r = c.post("/api/missions", json={"plan_id": job["id"]})
+        st.wait(f"/api/missions/{r.json()['id']}", "state", ("uploading",), 20)
+        assert c.post("/api/boat/command", json={"command": "start"}).status_code == 200
+        poll(lambda: any(a["level"] == "warning" and a["target_id"] == TARGET
+                         for a in c.get("/api/alerts").json()), 60, "a warning")
+        assert c.get("/api/monitor").json()["policy"] == policy
+        if policy == "off":
+            time.sleep(1.0)
+            assert c.get("/api/replans").json() == []
+        else:
+            done = poll(lambda: next((p for p in c.get("/api/replans").json()
+                                      if p["state"] != "planning"), None),
+                        120, "the re-plan")
+            if hasattr(BoatService, "swap_mission"):
+                assert done["state"] == "applied" and done["latency_ms"] > 0
+            else:
+                assert done["state"] == "planned" and done["error"] == NO_HOT_SWAP
+                assert c.get(f"/api/plans/{done['plan_id']}").json()["status"] == "done"
+        c.post("/api/boat/command", json={"command": "abort"})
+    finally:
+        st.stop()
