@@ -130,20 +130,22 @@ def clearance(value: float, tid: str = "ais:9", tcpa: float = -1.0) -> Assessmen
                       [TargetAssessment(tid, value, 5.0, 50.0, tcpa, "none")])
 
 
-def test_clearance_wobbling_at_the_margin_warns_once() -> None:
-    tracker = AlertTracker(MonitorConfig(clearance_margin_m=1.6, clearance_hysteresis_m=0.5))
+def test_clearance_wobbling_at_the_threshold_warns_once() -> None:
+    # advisory below 2 x 1.6 m, caution below the plan's margin 1.6 m, warning below 1.0 m
+    tracker = AlertTracker(MonitorConfig(clearance_margin_m=1.6, clearance_warning_m=1.0,
+                                         clearance_hysteresis_m=0.5))
     raised = []
-    for value in (10.0, 6.0, 3.0, 1.5, 1.7, 1.5, 1.9, 1.5, 2.2, 1.5):
+    for value in (10.0, 3.0, 1.5, 0.9, 1.1, 0.9, 1.4, 0.9, 1.6, 0.9):
         raised += [(e.kind, e.level) for e in tracker.update(clearance(value))]
     assert raised == [("clearance", "advisory"), ("clearance", "caution"),
                       ("clearance", "warning"), ("clearance", "warning")]
-    # the second warning came after the value cleared the band (2.2 > 1.6 + 0.5)
+    # the second warning came after the value cleared the band (1.6 > 1.0 + 0.5)
 
 
 def test_alert_messages_name_the_target_and_contact() -> None:
     (e,) = [e for e in AlertTracker().update(clearance(-0.4)) if e.kind == "clearance"]
     assert e.level == "warning" and e.target_id == "ais:9"
-    assert e.message == "ais:9: predicted clearance contact in 5 s (margin 1.6 m)"
+    assert e.message == "ais:9: predicted clearance contact in 5 s (plan margin 1.6 m)"
 
 
 def test_slip_and_cross_track_levels() -> None:
@@ -154,10 +156,12 @@ def test_slip_and_cross_track_levels() -> None:
     assert tracker.update(a) == []
 
 
-def test_collision_course_warns_only_when_the_plan_does_not_clear() -> None:
+def test_collision_course_warns_only_for_a_new_target_the_plan_does_not_clear() -> None:
     t_plan_clear = TargetAssessment("ais:5", 10.0, 5.0, 0.5, 20.0, "crossing-give-way")
-    t_plan_hits = TargetAssessment("ais:6", 0.5, 5.0, 0.5, 20.0, "crossing-give-way")
-    a = Assessment(0.0, 0.0, 0.0, np.zeros((1, 3)), [t_plan_clear, t_plan_hits])
+    t_plan_hits = TargetAssessment("ais:6", 1.2, 5.0, 0.5, 20.0, "crossing-give-way")
+    t_known = TargetAssessment("manual:0", 1.2, 5.0, 0.5, 20.0, "head-on", known=True)
+    a = Assessment(0.0, 0.0, 0.0, np.zeros((1, 3)), [t_plan_clear, t_plan_hits, t_known])
     got = {(e.kind, e.target_id, e.level) for e in AlertTracker().update(a)}
     assert ("collision_course", "ais:5", "caution") in got
     assert ("collision_course", "ais:6", "warning") in got
+    assert ("collision_course", "manual:0", "caution") in got

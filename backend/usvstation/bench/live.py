@@ -109,7 +109,7 @@ def run_episode(scenario: Scenario, plan: dict[str, Any], traffic: Traffic, poli
     boat.set_mission(to_waypoints(plan))
     boat.start()
     config = MonitorConfig(clearance_margin_m=v.length / 2 + v.compensation_radius,
-                           time_margin_s=5.0)
+                           clearance_warning_m=v.compensation_radius, time_margin_s=5.0)
     tracker, state = AlertTracker(config), ReplanState()
     waypoints = np.array([[w["x"], w["y"], w["t"]] for w in plan["waypoints"]])
     t, t0, next_monitor = 0.0, 0.0, 0.0

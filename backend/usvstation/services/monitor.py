@@ -52,6 +52,7 @@ log = logging.getLogger(__name__)
 MONITOR_EVERY_S = 0.5
 ASSESS_MIN_INTERVAL_S = 0.1  # every frame up to 10 Hz (telemetry runs at 5 Hz of boat time)
 DEFAULT_TIME_MARGIN_S = 5.0
+MIN_WARNING_M = 0.3  # the clearance warning threshold when R_c is smaller
 OWN_SHIP_AGE_S = (5.0, 10.0, 30.0)  # a silent own-ship position: advisory, caution, warning
 NO_HOT_SWAP = ("the boat link has no hot swap (usv-link 2, BoatService.swap_mission): "
                "the re-plan is kept as a plan; hold, abort and upload it to use it")
@@ -128,6 +129,7 @@ class MonitorService:
         v = self.scenario.vessel
         self.config = MonitorConfig(
             clearance_margin_m=v.length / 2.0 + v.compensation_radius,
+            clearance_warning_m=max(v.compensation_radius, MIN_WARNING_M),
             time_margin_s=float(getattr(v, "time_margin_s", DEFAULT_TIME_MARGIN_S)))
         self.tracker = AlertTracker(self.config)
         self.t0 = None
@@ -157,7 +159,8 @@ class MonitorService:
         boat = BoatState(float(bx), float(by), float(rvx), float(rvy),
                          float(row["boat_time"]) - self.t0,
                          float(frame.compass_to_heading_deg(row["heading_deg"])))
-        targets = [TargetState(v.id, v.x, v.y, v.rvx, v.rvy, v.radius)
+        targets = [TargetState(v.id, v.x, v.y, v.rvx, v.rvy, v.radius,
+                               known=v.source == "manual")
                    for v in self.world.world.targets(now)]
         a = assess(self.waypoints, boat, targets, self.scenario.vessel.length, self.config,
                    (float(fvx), float(fvy)))

@@ -38,7 +38,8 @@ class MonitorConfig:
     dt_s: float = 0.5
     rejoin_s: float = 10.0  # the boat's offset from its plan fades out over this time
     clearance_margin_m: float = 1.6  # hull clearance the plan keeps: L/2 + R_c (eq. 7)
-    clearance_hysteresis_m: float = 0.5
+    clearance_warning_m: float = 1.0  # below this a warning: R_c, the tracking allowance
+    clearance_hysteresis_m: float = 0.3
     time_margin_s: float = 5.0
     slip_hysteresis_s: float = 0.5
     cross_track_m: tuple[float, float, float] = (2.0, 5.0, 10.0)
@@ -65,6 +66,7 @@ class TargetState:
     vx: float  # relative to the ramp
     vy: float
     radius: float
+    known: bool = False  # the running plan was made around it (a scenario obstacle)
 
 
 @dataclass(frozen=True)
@@ -75,6 +77,7 @@ class TargetAssessment:
     dcpa_m: float
     tcpa_s: float
     encounter: Encounter
+    known: bool = False
 
 
 @dataclass(frozen=True)
@@ -195,7 +198,8 @@ def assess(waypoints: np.ndarray, boat: BoatState, targets: list[TargetState],
                 id=t.id, min_clearance_m=float(clear[i, k[i]]), t_min_s=float(s[k[i]]),
                 dcpa_m=dcpa, tcpa_s=tcpa,
                 encounter=encounter(p, (boat.vx + fvx, boat.vy + fvy),
-                                    (t.vx + fvx, t.vy + fvy), boat.heading_deg)))
+                                    (t.vx + fvx, t.vy + fvy), boat.heading_deg),
+                known=t.known))
     return Assessment(tau, slip, xte, np.column_stack([px, py, s]), out)
 
 
@@ -245,23 +249,24 @@ class AlertTracker:
         """Alerts raised by this assessment (predicted clearance, collision course, slip,
         cross-track); conditions that clear drop silently once past their hysteresis."""
         c = self.config
-        m = c.clearance_margin_m
+        m, w = c.clearance_margin_m, c.clearance_warning_m
         events: list[AlertEvent | None] = []
         seen = set()
         for t in a.targets:
             seen.add(t.id)
             what = "contact" if t.min_clearance_m <= 0 else f"{t.min_clearance_m:.1f} m"
             events.append(self.step(
-                "clearance", t.id, -t.min_clearance_m, (-4 * m, -2 * m, -m),
+                "clearance", t.id, -t.min_clearance_m, (-2 * m, -m, -w),
                 c.clearance_hysteresis_m,
                 f"{t.id}: predicted clearance {what} in {t.t_min_s:.0f} s "
-                f"(margin {m:.1f} m)"))
-            # on the present course; a warning only if the plan does not pass it clear
+                f"(plan margin {m:.1f} m)"))
+            # on the present course: a warning only for a target the plan was not made
+            # around (a new one) and that the plan's predicted path does not clear either
             on_course = 0.0 < t.tcpa_s < c.horizon_s
-            top = -m if t.min_clearance_m < 2 * m else math.inf
+            top = -w if not t.known and t.min_clearance_m < m else math.inf
             events.append(self.step(
                 "collision_course", t.id, -t.dcpa_m if on_course else -math.inf,
-                (-6 * m, -3 * m, top), c.clearance_hysteresis_m,
+                (-2 * m, -m, top), c.clearance_hysteresis_m,
                 f"{t.id}: on a collision course, DCPA {t.dcpa_m:.1f} m in {t.tcpa_s:.0f} s "
                 f"({t.encounter})"))
         for key in [k for k in self.levels if k[1] is not None and k[1] not in seen]:
