@@ -84,6 +84,12 @@ def build_parser() -> argparse.ArgumentParser:
     serve.add_argument("--viser-port", type=int, help="3D view port (default 8080)")
     serve.add_argument("--sim-speed", type=float,
                        help="simulated boat time runs this many times faster (default 1)")
+    serve.add_argument("--nmea", action="append", metavar="URL",
+                       help="ship sensors, NMEA 0183 and AIS (repeatable): udp://0.0.0.0:10110, "
+                       "tcp://HOST:PORT, serial:///dev/ttyUSB0?baud=38400 or a device path")
+    serve.add_argument("--replan", choices=["auto", "confirm", "off"],
+                       help="on a warning: re-plan and swap (auto), propose a re-plan for the "
+                       "operator to confirm (confirm, default) or only alert (off)")
 
     sim = sub.add_parser(
         "sim", help="run the simulated boat on a serial port",
@@ -115,7 +121,7 @@ def build_parser() -> argparse.ArgumentParser:
                      help="stop after this many seconds (default: run until interrupted)")
 
     bench = sub.add_parser("bench", help="run a benchmark and print its figures")
-    bench.add_argument("name", choices=["planner", "tracking", "link", "server"],
+    bench.add_argument("name", choices=["planner", "tracking", "link", "server", "live"],
                        help="which benchmark")
     bench.add_argument("--json", action="store_true", help="print one JSON object (default)")
     bench.add_argument("--scenarios", type=Path, help="folder of scenarios (default: public suite)")
@@ -124,6 +130,8 @@ def build_parser() -> argparse.ArgumentParser:
                        help="random scenarios for the validity rate (default 100, 0 to skip)")
     bench.add_argument("--quick", action="store_true",
                        help="fewer repetitions, for a smoke test (figures not for the record)")
+    bench.add_argument("--episodes", type=int, default=50,
+                       help="live: seeded episodes of the simulated sea (default 50)")
     bench.add_argument("--markdown", type=Path, metavar="JSON",
                        help="print the tables for RESULTS.md from a saved --json result")
     return parser
@@ -212,7 +220,7 @@ def _cmd_serve(args: argparse.Namespace) -> int:
     from usvstation.scenario import format_validation_error
 
     flags = {k: getattr(args, k) for k in ("host", "port", "link", "baud", "data_dir", "token",
-                                           "viser_port", "sim_speed")
+                                           "viser_port", "sim_speed", "nmea", "replan")
              if getattr(args, k) is not None}
     try:
         settings = Settings(**flags)
@@ -238,6 +246,15 @@ def _cmd_sim(args: argparse.Namespace) -> int:
 
 
 def _cmd_bench(args: argparse.Namespace) -> int:
+    if args.name == "live":
+        from usvstation.bench.live import run_live_bench
+
+        if args.episodes < 1:
+            raise CliError(f"--episodes: must be at least 1 (got {args.episodes})", EXIT_INVALID)
+        result = run_live_bench(episodes=args.episodes,
+                                progress=lambda msg: print(msg, file=sys.stderr, flush=True))
+        print(json.dumps(result, indent=2))
+        return EXIT_OK
     if args.name == "server":
         from usvstation.bench.server import run_server_bench
 

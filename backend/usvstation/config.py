@@ -7,8 +7,9 @@ import os
 import secrets
 import socket
 from pathlib import Path
+from typing import Literal
 
-from pydantic import Field
+from pydantic import Field, field_validator
 from pydantic_settings import BaseSettings, SettingsConfigDict
 
 MIN_TOKEN_LENGTH = 16
@@ -31,9 +32,24 @@ class Settings(BaseSettings):
     plan_workers: int = Field(2, ge=1, le=32)
     heartbeat_timeout_s: float = Field(3.0, gt=0.0)
     telemetry_hz: float = Field(5.0, gt=0.0, le=50.0)
+    nmea: list[str] = Field(
+        default_factory=list, description="ship-input sources (NMEA 0183, AIS): "
+        "udp://HOST:PORT, tcp://HOST:PORT, serial:///dev/DEVICE?baud=N or a device path")
+    replan: Literal["auto", "confirm", "off"] = Field(
+        "confirm", description="on a warning: re-plan and swap (auto), propose (confirm), "
+        "or only alert (off)")
     frontend_dir: Path | None = Field(
         None, description="operator console files (index.html, app/, node_modules/); "
         "default: frontend/ of the source checkout")
+
+    @field_validator("nmea")
+    @classmethod
+    def _nmea_urls(cls, urls: list[str]) -> list[str]:
+        from usvstation.shipinputs.readers import parse_source
+
+        for url in urls:
+            parse_source(url)
+        return urls
 
 
 class ExposureError(ValueError):

@@ -10,7 +10,10 @@ from usvstation.config import Settings, resolve_token
 from usvstation.scenario import Scenario, bundled_scenario_dir, parse_scenario
 from usvstation.services.boat import BoatService
 from usvstation.services.hub import LiveHub
+from usvstation.services.monitor import MonitorService
 from usvstation.services.plans import PlanService
+from usvstation.services.world import WorldService
+from usvstation.store.alerts import AlertStore
 from usvstation.store.db import Store
 from usvstation.viz.view import ThreeDView
 
@@ -28,6 +31,11 @@ class Station:
         self.plans = PlanService(self.store, self.hub, settings.plan_workers)
         self.view = ThreeDView(settings.host, settings.viser_port)
         self.boat = BoatService(settings, self.store, self.hub, self.plans, self.view)
+        self.world = WorldService(self.hub, settings.nmea, simulate=settings.link == "sim",
+                                  sim_speed=settings.sim_speed)
+        self.alerts = AlertStore(self.store)
+        self.monitor = MonitorService(self.hub, self.alerts, self.world, self.boat, self.plans,
+                                      settings.replan)
 
     async def start(self) -> None:
         self.store.start()
@@ -35,10 +43,13 @@ class Station:
         scenario = await self.working_scenario()
         await asyncio.to_thread(self.view.start)
         self.view.show_scenario(scenario)
+        await self.world.start(scenario)
         await self.boat.start(scenario)
 
     async def stop(self) -> None:
         """Close the link, stop plan workers, flush telemetry; the boat is sent nothing."""
+        await self.monitor.stop()
+        await self.world.stop()
         await self.boat.stop()
         await asyncio.to_thread(self.view.stop)
         await self.plans.stop()
@@ -55,6 +66,7 @@ class Station:
         await asyncio.to_thread(self.store.set_setting, "scenario",
                                 scenario.model_dump(mode="json"))
         self.view.show_scenario(scenario)
+        await self.world.use_scenario(scenario)
         self.hub.publish("scenario", {"name": scenario.name})
 
     def health(self) -> dict[str, Any]:

@@ -23,8 +23,10 @@ from fastapi.responses import JSONResponse, StreamingResponse
 from pydantic import BaseModel, ConfigDict, Field
 
 from usvstation import __version__
+from usvstation.api.alerts import router as alerts_router
 from usvstation.api.auth import require_token
 from usvstation.api.console import default_frontend_dir, mount_console
+from usvstation.api.world import router as world_router
 from usvstation.scenario import Scenario
 from usvstation.services.boat import BoatError
 from usvstation.services.export import FORMATS, export_chunks, planned_route
@@ -204,6 +206,8 @@ def create_app(station: Station) -> FastAPI:
         finally:
             station.hub.unsubscribe(sub)
 
+    app.include_router(world_router)
+    app.include_router(alerts_router)
     mount_console(app, station.settings.frontend_dir or default_frontend_dir())
     return app
 
