@@ -1,0 +1,103 @@
+// The plan card: ask the station for a plan, show its metrics and path, and say
+// when the scenario has changed since the plan was made.
+
+import * as api from './api.js';
+import { scheduleCharts, setDisplayTime } from './render.js';
+import { state, ui } from './store.js';
+import { $, fmt, showError, sleep } from './util.js';
+
+const METRICS = [
+  ['fitness', 'fitness (eq. 12)', '', 4],
+  ['fit_d', 'Fit_d, length ratio', '', 3],
+  ['fit_t', 'Fit_T, time per leg', 's', 2],
+  ['fit_ang', 'Fit_ang, turning', '', 3],
+  ['fit_mal', 'Fit_mal, offset from axis', 'm', 2],
+  ['length_m', 'length', 'm', 1],
+  ['duration_s', 'duration', 's', 1],
+  ['min_clearance_m', 'min. clearance', 'm', 2],
+  ['collision_free', 'collision-free', '', 0],
+  ['generations', 'generations', '', 0],
+  ['elapsed_s', 'planning time', 's', 3],
+];
+
+export function showPlan(job) {
+  state.plan = job;
+  const { map, charts, editor } = ui;
+  const plan = job.plan;
+  map.setPlan(plan, job.scenario.vessel);
+  charts.setPlan(plan);
+  scheduleCharts();
+  const duration = plan.metrics.duration_s;
+  map.setHorizon(duration * 1.2);
+  map.setScenario(editor.scenario);
+  $('time').max = String(Math.ceil(duration * 1.2));
+  const dl = $('plan-metrics');
+  dl.replaceChildren();
+  for (const [key, label, unit, digits] of METRICS) {
+    const value = plan.metrics[key];
+    if (value === undefined) continue;
+    const div = document.createElement('div');
+    div.dataset.metric = key;
+    const dt = document.createElement('dt');
+    dt.textContent = label;
+    const dd = document.createElement('dd');
+    if (typeof value === 'boolean') dd.textContent = value ? 'yes' : 'no';
+    else dd.textContent = `${Number(value).toFixed(digits)}${unit ? ` ${unit}` : ''}`;
+    div.append(dt, dd);
+    dl.append(div);
+  }
+  for (const warning of plan.warnings ?? []) {
+    const div = document.createElement('div');
+    div.className = 'warning';
+    div.textContent = warning;
+    dl.append(div);
+  }
+  const [vmin, vmax] = map.speedRange;
+  $('speed-min').textContent = fmt(vmin, 1);
+  $('speed-max').textContent = fmt(vmax, 1);
+  $('speed-legend').hidden = false;
+  updateStale();
+  setDisplayTime(state.displayT);
+}
+
+export function updateStale() {
+  const stale = Boolean(state.plan) && !ui.editor.matches(state.plan.scenario);
+  $('plan-stale').hidden = !stale;
+  $('upload').disabled = !state.plan || stale;
+}
+
+export async function runPlan() {
+  showError('plan', null);
+  const button = $('plan');
+  button.disabled = true;
+  const started = performance.now();
+  const progress = $('plan-progress');
+  try {
+    await ui.editor.flush();
+    const seedText = $('seed').value.trim();
+    const body = seedText === '' ? {} : { seed: Number(seedText) };
+    const accepted = await api.post('/api/plans', body);
+    state.waitingPlan = accepted.id;
+    progress.hidden = false;
+    let job;
+    for (;;) {
+      job = await api.get(`/api/plans/${accepted.id}`);
+      const secs = ((performance.now() - started) / 1000).toFixed(1);
+      $('plan-progress-text').textContent = `${job.status}, ${secs} s`;
+      if (job.status === 'done' || job.status === 'failed') break;
+      await sleep(150);
+    }
+    if (job.status === 'failed') throw new Error(`no plan: ${job.error}`);
+    showPlan(job);
+  } catch (err) {
+    showError('plan', err);
+  } finally {
+    state.waitingPlan = null;
+    progress.hidden = true;
+    button.disabled = false;
+  }
+}
+
+export function bindPlanControls() {
+  $('plan').addEventListener('click', runPlan);
+}
