@@ -34,6 +34,8 @@ class Settings(BaseSettings):
     frontend_dir: Path | None = Field(
         None, description="operator console files (index.html, app/, node_modules/); "
         "default: frontend/ of the source checkout")
+    charts_dir: Path | None = Field(
+        None, description="folder of offline chart packages (*.mbtiles) served at /api/charts")
 
 
 class ExposureError(ValueError):

@@ -7,8 +7,11 @@ import json
 from typing import Any
 
 from usvstation.config import Settings, resolve_token
+from usvstation.link import messages as m
+from usvstation.link.protocol import BoatHeartbeat, LinkUp
 from usvstation.scenario import Scenario, bundled_scenario_dir, parse_scenario
-from usvstation.services.boat import BoatService
+from usvstation.services.alerts import AlertService
+from usvstation.services.boat import BoatService, _name
 from usvstation.services.hub import LiveHub
 from usvstation.services.plans import PlanService
 from usvstation.store.db import Store
@@ -28,6 +31,7 @@ class Station:
         self.plans = PlanService(self.store, self.hub, settings.plan_workers)
         self.view = ThreeDView(settings.host, settings.viser_port)
         self.boat = BoatService(settings, self.store, self.hub, self.plans, self.view)
+        self.alerts = AlertService(self.hub, run_id=lambda: self.boat.run)
 
     async def start(self) -> None:
         self.store.start()
@@ -36,6 +40,17 @@ class Station:
         await asyncio.to_thread(self.view.start)
         self.view.show_scenario(scenario)
         await self.boat.start(scenario)
+        if self.boat.link is not None:
+            self.boat.link.add_listener(self.alerts.on_link_event)
+            self.boat.link.add_listener(self._publish_heartbeat)
+
+    def _publish_heartbeat(self, ev: object) -> None:
+        """Each boat HEARTBEAT to the live clients (about 1 Hz), so no console polls for it."""
+        if isinstance(ev, BoatHeartbeat | LinkUp):
+            hb = ev.heartbeat
+            self.hub.publish("heartbeat", {"state": _name(m.State, hb.state),
+                                           "mode": _name(m.Mode, hb.mode),
+                                           "mission_id": hb.mission_id})
 
     async def stop(self) -> None:
         """Close the link, stop plan workers, flush telemetry; the boat is sent nothing."""

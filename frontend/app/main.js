@@ -2,7 +2,9 @@
 // each card's controls (one module per concern, one store of state in store.js) and
 // connects to the station's HTTP API and live websocket (/ws/live).
 
+import { bindAlerts } from './alerts.js';
 import * as api from './api.js';
+import { bindCharts, pickingOriginNow, placeOrigin } from './chartpicker.js';
 import { TelemetryCharts } from './charts.js';
 import { bindInstruments } from './instruments.js';
 import { connectLive, startPolling } from './live.js';
@@ -13,6 +15,7 @@ import { refreshRuns } from './runs.js';
 import { ScenarioEditor } from './scenario.js';
 import { applyStoredTiles, bindSettings } from './settings.js';
 import { state, ui } from './store.js';
+import { bindShortcuts } from './shortcuts.js';
 import { bindTimebar } from './timebar.js';
 import { $, nextTask, showError } from './util.js';
 
@@ -51,7 +54,7 @@ async function main() {
   api.adoptTokenFromUrl();
   await nextTask();
   ui.map = new ConsoleMap($('map'), {
-    onClick: (x, y) => ui.editor.mapClicked(x, y),
+    onClick: (x, y, ll) => (pickingOriginNow() ? placeOrigin(ll) : ui.editor.mapClicked(x, y)),
     onStartMoved: (x, y) => ui.editor.moveStart(x, y),
     onObstacleMoved: (i, x, y) => ui.editor.moveObstacle(i, x, y),
   });
@@ -69,6 +72,9 @@ async function main() {
   bindTimebar();
   bindSettings();
   bindInstruments();
+  bindAlerts();
+  bindShortcuts();
+  bindCharts();
   connectLive();
   await ui.editor.load({ fit: true });
   startPolling();

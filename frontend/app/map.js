@@ -227,7 +227,7 @@ export class ConsoleMap {
     this.trackLatLngs = [];
     this.map.on('click', (e) => {
       const [x, y] = this.frame.toRamp(e.latlng.lat, e.latlng.lng);
-      this.handlers.onClick?.(x, y);
+      this.handlers.onClick?.(x, y, e.latlng);
     });
     this.map.setView([0, 0], 18);
   }
@@ -277,6 +277,32 @@ export class ConsoleMap {
     this.layersControl.addBaseLayer(this.tiles, `Online map (${host}) + grid`);
     this.map.removeLayer(this.grid);
     this.tiles.addTo(this.map);
+  }
+
+  /** An offline chart package from the station (GET /api/charts), or null for none. */
+  setChart(pkg) {
+    if (this.chart) {
+      this.layersControl.removeLayer(this.chart);
+      this.map.removeLayer(this.chart);
+      this.chart = null;
+    }
+    if (!pkg) return;
+    const opts = { maxZoom: 24, className: 'chart-tiles',
+      attribution: pkg.attribution ?? `chart: ${pkg.title}` };
+    if (pkg.maxzoom != null) opts.maxNativeZoom = pkg.maxzoom;
+    if (pkg.minzoom != null) opts.minNativeZoom = pkg.minzoom;
+    if (pkg.bounds) {
+      const [w, south, e, n] = pkg.bounds;
+      opts.bounds = L.latLngBounds([south, w], [n, e]);
+    }
+    this.chart = L.tileLayer(pkg.tiles, opts);
+    this.layersControl.addOverlay(this.chart, `Offline chart: ${pkg.title}`);
+    this.chart.addTo(this.map);
+  }
+
+  /** Pan to the boat's last position, if there is one. */
+  centreOnBoat() {
+    if (this.boatMarker) this.map.panTo(this.boatMarker.getLatLng());
   }
 
   drawRamp(axisLength = 150) {

@@ -77,11 +77,16 @@ export function confirmAbort() {
 export function bindMissionControls() {
   $('upload').addEventListener('click', upload);
   for (const b of document.querySelectorAll('[data-command]')) {
-    if (b.dataset.command === 'abort') continue;
+    if (b.dataset.command === 'abort' || b.dataset.command === 'start') continue;
     b.addEventListener('click', () => command(b.dataset.command));
   }
   const dialog = $('abort-dialog');
   $('cmd-abort').addEventListener('click', confirmAbort);
+  $('cmd-start').addEventListener('click', () => {
+    const start = $('start-dialog');
+    start.returnValue = '';
+    start.showModal();
+  });
   dialog.addEventListener('close', () => {
     if (dialog.returnValue === 'abort') command('abort');
   });

@@ -3,6 +3,8 @@
 
 import * as api from './api.js';
 import { scheduleCharts, setDisplayTime } from './render.js';
+import { obstaclesFromOne } from './scenario.js';
+import { updateTimeRange } from './timebar.js';
 import { state, ui } from './store.js';
 import { $, fmt, showError, sleep } from './util.js';
 
@@ -27,10 +29,9 @@ export function showPlan(job) {
   map.setPlan(plan, job.scenario.vessel);
   charts.setPlan(plan);
   scheduleCharts();
-  const duration = plan.metrics.duration_s;
-  map.setHorizon(duration * 1.2);
+  map.setHorizon(plan.metrics.duration_s * 1.2);
   map.setScenario(editor.scenario);
-  $('time').max = String(Math.ceil(duration * 1.2));
+  updateTimeRange();
   const dl = $('plan-metrics');
   dl.replaceChildren();
   for (const [key, label, unit, digits] of METRICS) {
@@ -60,7 +61,16 @@ export function showPlan(job) {
   setDisplayTime(state.displayT);
 }
 
+/** The seed an empty seed box stands for: the scenario's planner.seed, else the planner's 1. */
+export function updateSeedHint() {
+  const seed = ui.editor.scenario?.planner?.seed ?? 1;
+  const box = $('seed');
+  box.placeholder = `${seed} (default)`;
+  box.title = `empty: seed ${seed}, the same plan every time; enter another seed for another plan`;
+}
+
 export function updateStale() {
+  updateSeedHint();
   const stale = Boolean(state.plan) && !ui.editor.matches(state.plan.scenario);
   $('plan-stale').hidden = !stale;
   $('upload').disabled = !state.plan || stale;
@@ -90,7 +100,7 @@ export async function runPlan() {
     if (job.status === 'failed') throw new Error(`no plan: ${job.error}`);
     showPlan(job);
   } catch (err) {
-    showError('plan', err);
+    showError('plan', new Error(obstaclesFromOne(err.message ?? err)));
   } finally {
     state.waitingPlan = null;
     progress.hidden = true;

@@ -5,6 +5,7 @@ import * as api from './api.js';
 import { showPlan } from './plan.js';
 import { requestRender, setDisplayTime, setFollow } from './render.js';
 import { pending, state, ui } from './store.js';
+import { updateTimeRange } from './timebar.js';
 import { $, showError } from './util.js';
 
 const EXPORT_FORMATS = ['csv', 'gpx', 'geojson', 'jsonl'];
@@ -32,6 +33,7 @@ function addRunRows(rows) {
   if (shown.t0 === null) shown.t0 = rows[0].boat_time;
   shown.rows.push(...rows);
   pending.rows.push(...rows);
+  updateTimeRange();
   if (shown.live && state.follow) {
     setDisplayTime(rows[rows.length - 1].boat_time - shown.t0);
   }

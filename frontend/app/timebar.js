@@ -28,6 +28,21 @@ function togglePlay() {
   button.setAttribute('aria-pressed', 'true');
 }
 
+const PLAN_MARGIN = 1.2; // the slider reaches past the plan's end by this factor
+
+/** The slider covers the plan (with a margin) and the whole shown run, however long. */
+export function updateTimeRange() {
+  const plan = state.plan?.plan;
+  let end = plan ? plan.metrics.duration_s * PLAN_MARGIN : 0;
+  const shown = state.shown;
+  if (shown && shown.rows.length) {
+    end = Math.max(end, shown.rows[shown.rows.length - 1].boat_time - shown.t0);
+  }
+  if (!plan && !(shown && shown.rows.length)) end = 120;
+  const max = String(Math.ceil(end * 10) / 10);
+  if ($('time').max !== max) $('time').max = max;
+}
+
 export function bindTimebar() {
   $('time').addEventListener('input', (e) => {
     setFollow(false);
