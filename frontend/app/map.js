@@ -168,6 +168,16 @@ function boatIcon() {
   });
 }
 
+function replayIcon() {
+  return L.divIcon({
+    className: 'replay-boat',
+    iconSize: [28, 28],
+    iconAnchor: [14, 14],
+    html: '<svg class="boat-glyph" viewBox="-14 -14 28 28" width="28" height="28" aria-hidden="true">'
+      + '<path d="M0,-12 L7,9 L0,5 L-7,9 Z" fill="none" stroke="#c53030" stroke-width="2"/></svg>',
+  });
+}
+
 function handleIcon(label, cls) {
   return L.divIcon({ className: `map-handle ${cls}`, iconSize: [22, 22], iconAnchor: [11, 11],
     html: `<span>${label}</span>` });
@@ -298,6 +308,26 @@ export class ConsoleMap {
     this.chart = L.tileLayer(pkg.tiles, opts);
     this.layersControl.addOverlay(this.chart, `Offline chart: ${pkg.title}`);
     this.chart.addTo(this.map);
+  }
+
+  /** The shown run's boat at the displayed time (replay), or none. */
+  setReplayBoat(row) {
+    if (!row || row.lat == null) {
+      if (this.replayMarker) {
+        this.replayMarker.remove();
+        this.replayMarker = null;
+      }
+      return;
+    }
+    const ll = L.latLng(row.lat, row.lon);
+    if (!this.replayMarker) {
+      this.replayMarker = L.marker(ll, { icon: replayIcon(), keyboard: false, interactive: false,
+        zIndexOffset: 900 }).addTo(this.boatLayer);
+    } else {
+      this.replayMarker.setLatLng(ll);
+    }
+    const glyph = this.replayMarker.getElement()?.querySelector('.boat-glyph');
+    if (glyph) glyph.style.transform = `rotate(${row.heading_deg}deg)`;
   }
 
   /** Pan to the boat's last position, if there is one. */
