@@ -222,6 +222,7 @@ export class ConsoleMap {
     this.trackLayer = L.layerGroup([this.trackLine]).addTo(this.map);
     this.boatLayer = L.layerGroup().addTo(this.map);
     this.startLayer = L.layerGroup().addTo(this.map);
+    this.overlayLayer = L.layerGroup().addTo(this.map);
     this.layersControl = L.control.layers(this.baseLayers, {
       Ramp: this.rampLayer,
       Obstacles: this.obstacleLayer,
@@ -468,6 +469,16 @@ export class ConsoleMap {
         .addTo(this.smoothedLayer);
     }
     this.setDisplayTime(this.displayT);
+  }
+
+  /** A second plan to compare with, dashed, or none. */
+  setOverlayPlan(plan) {
+    this.overlayLayer.clearLayers();
+    if (!plan) return;
+    L.polyline(plan.waypoints.map((w) => this.ll(w.x, w.y)), { color: '#553c9a', weight: 3,
+      dashArray: '10 6', className: 'overlay-plan' })
+      .bindTooltip(`${plan.planner} plan, seed ${plan.seed}`, { sticky: true })
+      .addTo(this.overlayLayer);
   }
 
   /** Replace the real track with telemetry rows (lat/lon from the boat's GPS). */

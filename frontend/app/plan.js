@@ -86,6 +86,7 @@ export async function runPlan() {
     await ui.editor.flush();
     const seedText = $('seed').value.trim();
     const body = seedText === '' ? {} : { seed: Number(seedText) };
+    if (!$('planner-label').hidden && $('planner').value) body.planner = $('planner').value;
     const accepted = await api.post('/api/plans', body);
     state.waitingPlan = accepted.id;
     progress.hidden = false;
@@ -99,6 +100,7 @@ export async function runPlan() {
     }
     if (job.status === 'failed') throw new Error(`no plan: ${job.error}`);
     showPlan(job);
+    refreshOverlayChoices();
   } catch (err) {
     showError('plan', new Error(obstaclesFromOne(err.message ?? err)));
   } finally {
@@ -108,6 +110,71 @@ export async function runPlan() {
   }
 }
 
+/** The planners the station offers (GET /api/planners); no select when it has none. */
+async function loadPlanners() {
+  let planners;
+  try {
+    planners = await api.get('/api/planners');
+  } catch (err) {
+    if (err.status !== 404) showError('plan', err);
+    return;
+  }
+  const select = $('planner');
+  select.replaceChildren(...planners.map((p) => {
+    const opt = document.createElement('option');
+    opt.value = p.name;
+    opt.textContent = p.title ? `${p.name}: ${p.title}` : p.name;
+    opt.title = [p.paper, (p.capabilities ?? []).join(', ')].filter(Boolean).join('; ');
+    return opt;
+  }));
+  $('planner-label').hidden = planners.length === 0;
+}
+
+/** The finished plans, newest first, to overlay on the shown one. */
+export async function refreshOverlayChoices() {
+  let plans;
+  try {
+    plans = await api.get('/api/plans');
+  } catch {
+    return;
+  }
+  const select = $('overlay-plan');
+  const keep = select.value;
+  const done = plans.filter((p) => p.status === 'done')
+    .sort((a, b) => b.created_at.localeCompare(a.created_at));
+  select.replaceChildren(select.options[0], ...done.map((p) => {
+    const opt = document.createElement('option');
+    opt.value = p.id;
+    const at = new Date(p.created_at).toLocaleTimeString([], { hour12: false });
+    opt.textContent = `${at} ${p.planner} seed ${p.seed ?? '–'} (${p.scenario}), `
+      + `fitness ${Number(p.fitness).toFixed(3)}`;
+    return opt;
+  }));
+  if (done.some((p) => p.id === keep)) select.value = keep;
+}
+
+async function overlay(id) {
+  $('overlay-metrics').textContent = '';
+  if (!id) {
+    ui.map.setOverlayPlan(null);
+    return;
+  }
+  try {
+    const job = await api.get(`/api/plans/${id}`);
+    ui.map.setOverlayPlan(job.plan);
+    const m = job.plan.metrics;
+    $('overlay-metrics').textContent = `overlay (dashed): ${job.plan.planner}, length `
+      + `${fmt(m.length_m)} m, duration ${fmt(m.duration_s)} s, min. clearance `
+      + `${fmt(m.min_clearance_m, 2)} m, fitness ${fmt(m.fitness, 4)}`;
+  } catch (err) {
+    showError('plan', err);
+  }
+}
+
 export function bindPlanControls() {
   $('plan').addEventListener('click', runPlan);
+  $('overlay-plan').addEventListener('change', (e) => overlay(e.target.value));
+  $('overlay-plan').addEventListener('focus', refreshOverlayChoices);
+  loadPlanners();
+  refreshOverlayChoices();
 }

@@ -101,6 +101,9 @@ def test_plan_upload_run_and_download(page, station, artifacts):
     first = int(track.inner_text())
     page.wait_for_function(f"Number(document.getElementById('track-points').textContent) > "
                            f"{first + 20}", timeout=20_000)
+    # the instruments during the run: behind or ahead of the plan's schedule, cross-track
+    expect(page.locator("#boat-slip")).to_have_text(re.compile(r"^[+-]\d+\.\d$"))
+    expect(page.locator("#boat-xte")).to_have_text(re.compile(r"^-?\d+\.\d$"))
     moved = wait_until_moved(page, before, 40)
     assert math.dist(before, moved) > 40  # pixels, about 4 m at this zoom
     d = page.locator("path.real-track").get_attribute("d")

@@ -252,7 +252,7 @@ def test_night_mode_stays_within_its_palette(page, chart_station, artifacts):
     assert not_red == [], json.dumps(not_red[:10])
     assert len(found["colours"]) > 100
     assert all("sepia" in f and "invert" in f for f in found["filters"])
-    page.screenshot(path=artifacts / "console-night.png")
+    page.screenshot(path=artifacts / "console-night-palette.png")
     # kept per browser, applied before the first paint
     page.reload()
     assert page.evaluate("document.documentElement.classList.contains('night')")
@@ -339,5 +339,31 @@ def test_replay_of_a_stored_run_at_20x(browser, chart_station, artifacts):
         print(f"replay at 20x: longest task {longest:.0f} ms (loaded machine)")
         assert longest <= 200
         page.screenshot(path=artifacts / "bridge-replay-end.png")
+        page.check("#set-night")  # the README's night screenshot: the replayed run
+        page.wait_for_timeout(700)
+        page.screenshot(path=artifacts / "console-night.png")
     finally:
         context.close()
+
+
+def test_planner_select_and_an_overlaid_plan(page, chart_station):
+    st = chart_station
+    c = st.client
+    for seed in (3, 4):
+        st.wait_plan(c.post("/api/plans", json={"seed": seed}).json()["id"])
+    open_console(page, st)
+    planners = c.get("/api/planners")
+    if planners.status_code == 404:  # a station without the planner registry: no select
+        expect(page.locator("#planner-label")).to_be_hidden()
+    else:
+        names = [p["name"] for p in planners.json()]
+        expect(page.locator("#planner option")).to_have_count(len(names))
+    page.click("#plan")
+    expect(page.locator("[data-metric=length_m] dd")).to_be_visible(timeout=30_000)
+    other = next(p for p in c.get("/api/plans").json() if p["seed"] == 3)
+    page.locator("#overlay-plan").focus()
+    page.select_option("#overlay-plan", other["id"])
+    expect(page.locator("path.overlay-plan")).to_have_count(1)
+    expect(page.locator("#overlay-metrics")).to_contain_text("overlay (dashed): iga, length ")
+    page.select_option("#overlay-plan", "")
+    expect(page.locator("path.overlay-plan")).to_have_count(0)
