@@ -45,12 +45,14 @@ class Station:
             self.boat.link.add_listener(self._publish_heartbeat)
 
     def _publish_heartbeat(self, ev: object) -> None:
-        """Each boat HEARTBEAT to the live clients (about 1 Hz), so no console polls for it."""
+        """Each boat HEARTBEAT to the live clients (about 1 Hz) with the link's counters
+        (as in GET /api/boat `link`), so no console polls for them."""
         if isinstance(ev, BoatHeartbeat | LinkUp):
             hb = ev.heartbeat
             self.hub.publish("heartbeat", {"state": _name(m.State, hb.state),
                                            "mode": _name(m.Mode, hb.mode),
-                                           "mission_id": hb.mission_id})
+                                           "mission_id": hb.mission_id,
+                                           "link": self.boat.snapshot()["link"]})
 
     async def stop(self) -> None:
         """Close the link, stop plan workers, flush telemetry; the boat is sent nothing."""

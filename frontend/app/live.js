@@ -8,9 +8,9 @@ import { onTelemetry, refreshRuns, showRun } from './runs.js';
 import { emit, state, ui } from './store.js';
 import { $, fmt, setPill } from './util.js';
 
-// The live websocket carries telemetry, link changes and alerts; GET /api/boat is only
-// read for the decoder's counters and the heartbeat age, every BOAT_POLL_MS.
-const BOAT_POLL_MS = 10000;
+// The live websocket carries telemetry, heartbeats (with the link's counters), link
+// changes and alerts; GET /api/boat is read at start and then only every BOAT_POLL_MS.
+const BOAT_POLL_MS = 30000;
 const AGE_TICK_MS = 500;
 const ages = { hb: null, tm: null }; // performance.now() of the last heartbeat / telemetry
 
@@ -24,13 +24,17 @@ async function pollBoat() {
     if (link.heartbeat_age_s != null) ages.hb = now - link.heartbeat_age_s * 1000;
     if (link.telemetry_age_s != null) ages.tm = now - link.telemetry_age_s * 1000;
     showAges();
-    $('frames').textContent = String(link.frames ?? '–');
-    $('frames-lost').textContent = link.frames_lost == null ? '–' : String(link.frames_lost);
-    showLink(link);
+    showCounters(link);
     if (boat.boat) $('boat-state').textContent = `${boat.boat.state} (${boat.boat.mode})`;
   } catch (err) {
     setPill($('link-state'), `station unreachable`, 'bad');
   }
+}
+
+function showCounters(link) {
+  $('frames').textContent = String(link.frames ?? '–');
+  $('frames-lost').textContent = link.frames_lost == null ? '–' : String(link.frames_lost);
+  showLink(link);
 }
 
 function showAges() {
@@ -123,6 +127,7 @@ function handleLive(type, data) {
     case 'heartbeat':
       ages.hb = performance.now();
       $('boat-state').textContent = `${data.state} (${data.mode})`;
+      if (data.link) showCounters(data.link);
       break;
     case 'status':
       addMessage(data);

@@ -146,8 +146,10 @@ def test_a_run_ends_when_the_boat_reports_done_between_telemetry_frames(browser,
         open_console(page, st)
         plan = st.wait_plan(c.post("/api/plans", json={"seed": 1}).json()["id"])
         mission = c.post("/api/missions", json={"plan_id": plan["id"]}).json()
-        st.wait(f"/api/missions/{mission['id']}", "state", ("uploading",), 20)
-        assert c.post("/api/boat/command", json={"command": "start"}).status_code == 200
+        uploaded = st.wait(f"/api/missions/{mission['id']}", "state", ("uploading",), 20)
+        assert uploaded["state"] == "verified", uploaded
+        started = c.post("/api/boat/command", json={"command": "start"})
+        assert started.status_code == 200, started.text
         done = st.wait(f"/api/missions/{mission['id']}", "state", ("active",), 15)
         assert done["state"] == "completed"
         runs = c.get("/api/runs").json()
