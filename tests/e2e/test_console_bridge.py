@@ -367,3 +367,27 @@ def test_planner_select_and_an_overlaid_plan(page, chart_station):
     expect(page.locator("#overlay-metrics")).to_contain_text("overlay (dashed): iga, length ")
     page.select_option("#overlay-plan", "")
     expect(page.locator("path.overlay-plan")).to_have_count(0)
+
+
+def test_ramp_origin_placed_on_the_map(page, chart_station):
+    st = chart_station
+    before = st.client.get("/api/scenario").json()
+    try:
+        open_console(page, st)
+        page.click("#set-origin")
+        expect(page.locator("#set-origin")).to_have_attribute("aria-pressed", "true")
+        point = page.evaluate("usvConsole.map.rampToContainerPoint(20, 5)")
+        want = page.evaluate("([x, y]) => { const ll = usvConsole.map.map"
+                             ".containerPointToLatLng([x, y]); return [ll.lat, ll.lng]; }",
+                             [point["x"], point["y"]])
+        page.locator("#map").click(position=point)
+        expect(page.locator("#scenario-status")).to_contain_text("saved", timeout=10_000)
+        origin = st.client.get("/api/scenario").json()["origin"]
+        assert abs(origin["lat"] - want[0]) < 1e-6 and abs(origin["lon"] - want[1]) < 1e-6
+        assert origin["ramp_bearing_deg"] == before["origin"]["ramp_bearing_deg"]
+        expect(page.locator("#set-origin")).to_have_attribute("aria-pressed", "false")
+        # the ramp is drawn at the new origin: ramp-frame (0, 0) is where the click was
+        now = page.evaluate("usvConsole.map.rampToContainerPoint(0, 0)")
+        assert abs(now["x"] - point["x"]) < 1.5 and abs(now["y"] - point["y"]) < 1.5
+    finally:
+        assert st.client.put("/api/scenario", json=before).status_code == 200
