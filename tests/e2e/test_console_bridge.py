@@ -224,6 +224,12 @@ PALETTE_CHECK = """() => {
     const cs = getComputedStyle(el);
     if (cs.visibility === 'hidden') continue;
     const props = ['color', 'background-color'];
+    if (['INPUT', 'PROGRESS'].includes(el.tagName)) {
+      // the browser draws sliders, boxes and bars in its own blue unless told
+      if (cs.accentColor === 'auto') out.push({ el: el.id || el.tagName, p: 'accent-color',
+                                                L: 1, r: 0, g: 0, b: 255, c: 'auto' });
+      else props.push('accent-color');
+    }
     for (const side of ['top', 'right', 'bottom', 'left']) {
       if (parseFloat(cs[`border-${side}-width`]) > 0) props.push(`border-${side}-color`);
     }
