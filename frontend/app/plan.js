@@ -5,7 +5,8 @@ import * as api from './api.js';
 import { scheduleCharts, setDisplayTime } from './render.js';
 import { obstaclesFromOne } from './scenario.js';
 import { updateTimeRange } from './timebar.js';
-import { state, ui } from './store.js';
+import { speedIn } from './settings.js';
+import { on, state, ui } from './store.js';
 import { $, fmt, showError, sleep } from './util.js';
 
 const METRICS = [
@@ -53,12 +54,16 @@ export function showPlan(job) {
     div.textContent = warning;
     dl.append(div);
   }
-  const [vmin, vmax] = map.speedRange;
-  $('speed-min').textContent = fmt(vmin, 1);
-  $('speed-max').textContent = fmt(vmax, 1);
+  showSpeedLegend();
   $('speed-legend').hidden = false;
   updateStale();
   setDisplayTime(state.displayT);
+}
+
+function showSpeedLegend() {
+  const [vmin, vmax] = ui.map.speedRange ?? [null, null];
+  $('speed-min').textContent = fmt(speedIn(vmin), 1);
+  $('speed-max').textContent = fmt(speedIn(vmax), 1);
 }
 
 /** The seed an empty seed box stands for: the scenario's planner.seed, else the planner's 1. */
@@ -173,6 +178,7 @@ async function overlay(id) {
 
 export function bindPlanControls() {
   $('plan').addEventListener('click', runPlan);
+  on('units', showSpeedLegend);
   $('overlay-plan').addEventListener('change', (e) => overlay(e.target.value));
   $('overlay-plan').addEventListener('focus', refreshOverlayChoices);
   loadPlanners();

@@ -279,8 +279,13 @@ def test_shortcuts_units_and_large_text(page, chart_station):
     page.wait_for_function("(document.getElementById('command-result').textContent"
                            " + document.getElementById('command-error').textContent)"
                            ".includes('HOLD')")
+    page.click("#plan")
+    expect(page.locator("#speed-legend")).to_be_visible(timeout=30_000)
+    vmax_ms = float(page.locator("#speed-max").inner_text())
     page.locator("body").press("u")
-    expect(page.locator(".speed-unit").first).to_have_text("kn")
+    expect(page.locator(".speed-unit")).to_have_text(["kn"] * page.locator(".speed-unit").count())
+    assert float(page.locator("#speed-max").inner_text()) == pytest.approx(
+        vmax_ms * 3600 / 1852, abs=0.06)
     page.locator("body").press("l")
     assert page.evaluate("document.documentElement.classList.contains('large')")
     page.reload()
