@@ -82,6 +82,8 @@ def build_parser() -> argparse.ArgumentParser:
     serve.add_argument("--data-dir", type=Path, help="database and token folder (default ./data)")
     serve.add_argument("--token", help="access token (default: generated into the data dir)")
     serve.add_argument("--viser-port", type=int, help="3D view port (default 8080)")
+    serve.add_argument("--charts", dest="charts_dir", type=Path,
+                       help="folder of offline chart packages (*.mbtiles) for the console's map")
     serve.add_argument("--sim-speed", type=float,
                        help="simulated boat time runs this many times faster (default 1)")
     serve.add_argument("--nmea", action="append", metavar="URL",
@@ -222,6 +224,8 @@ def _cmd_serve(args: argparse.Namespace) -> int:
     flags = {k: getattr(args, k) for k in ("host", "port", "link", "baud", "data_dir", "token",
                                            "viser_port", "sim_speed", "nmea", "replan")
              if getattr(args, k) is not None}
+    if args.charts_dir is not None:
+        flags["charts_dir"] = args.charts_dir
     try:
         settings = Settings(**flags)
     except ValidationError as exc:

@@ -41,6 +41,8 @@ class Settings(BaseSettings):
     frontend_dir: Path | None = Field(
         None, description="operator console files (index.html, app/, node_modules/); "
         "default: frontend/ of the source checkout")
+    charts_dir: Path | None = Field(
+        None, description="folder of offline chart packages (*.mbtiles) served at /api/charts")
 
     @field_validator("nmea")
     @classmethod

@@ -7,8 +7,11 @@ import json
 from typing import Any
 
 from usvstation.config import Settings, resolve_token
+from usvstation.link import messages as m
+from usvstation.link.protocol import BoatHeartbeat, LinkUp
 from usvstation.scenario import Scenario, bundled_scenario_dir, parse_scenario
-from usvstation.services.boat import BoatService
+from usvstation.services.alerts import LinkAlerts
+from usvstation.services.boat import BoatService, _name
 from usvstation.services.hub import LiveHub
 from usvstation.services.monitor import MonitorService
 from usvstation.services.plans import PlanService
@@ -36,6 +39,7 @@ class Station:
         self.alerts = AlertStore(self.store)
         self.monitor = MonitorService(self.hub, self.alerts, self.world, self.boat, self.plans,
                                       settings.replan)
+        self.link_alerts = LinkAlerts(self.monitor.raise_alert)
 
     async def start(self) -> None:
         self.store.start()
@@ -45,6 +49,19 @@ class Station:
         self.view.show_scenario(scenario)
         await self.world.start(scenario)
         await self.boat.start(scenario)
+        if self.boat.link is not None:
+            self.boat.link.add_listener(self.link_alerts.on_link_event)
+            self.boat.link.add_listener(self._publish_heartbeat)
+
+    def _publish_heartbeat(self, ev: object) -> None:
+        """Each boat HEARTBEAT to the live clients (about 1 Hz) with the link's counters
+        (as in GET /api/boat `link`), so no console polls for them."""
+        if isinstance(ev, BoatHeartbeat | LinkUp):
+            hb = ev.heartbeat
+            self.hub.publish("heartbeat", {"state": _name(m.State, hb.state),
+                                           "mode": _name(m.Mode, hb.mode),
+                                           "mission_id": hb.mission_id,
+                                           "link": self.boat.snapshot()["link"]})
 
     async def stop(self) -> None:
         """Close the link, stop plan workers, flush telemetry; the boat is sent nothing."""

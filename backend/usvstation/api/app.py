@@ -25,11 +25,13 @@ from pydantic import BaseModel, ConfigDict, Field
 from usvstation import __version__
 from usvstation.api.alerts import router as alerts_router
 from usvstation.api.auth import require_token
+from usvstation.api.charts import router as charts_router
 from usvstation.api.console import default_frontend_dir, mount_console
 from usvstation.api.world import router as world_router
 from usvstation.scenario import Scenario
 from usvstation.services.boat import BoatError
 from usvstation.services.export import FORMATS, export_chunks, planned_route
+from usvstation.services.plans import outdated_by
 from usvstation.station import Station
 
 Auth = [Depends(require_token)]
@@ -132,6 +134,13 @@ def create_app(station: Station) -> FastAPI:
               responses={409: {"description": "plan not done, no origin, or a mission running"},
                          503: {"description": "the boat link is down"}})
     async def post_mission(req: MissionRequest) -> dict[str, Any]:
+        job = station.plans.get(req.plan_id)
+        if job is not None:  # a plan of the working scenario, which changed since: refused
+            changed = outdated_by(job["scenario"], await station.working_scenario())
+            if changed:
+                raise HTTPException(409, detail=(
+                    f"plan {req.plan_id} was made for scenario {job['scenario']['name']!r} as it "
+                    f"was before it changed ({', '.join(changed)}): plan again"))
         return await station.boat.create_mission(req.plan_id)
 
     @app.get("/api/missions", tags=["boat"])
@@ -208,6 +217,7 @@ def create_app(station: Station) -> FastAPI:
 
     app.include_router(world_router)
     app.include_router(alerts_router)
+    app.include_router(charts_router)
     mount_console(app, station.settings.frontend_dir or default_frontend_dir())
     return app
 

@@ -287,6 +287,9 @@ class BoatService:
             raise BoatError(409, f"the boat refused {name.upper()}: {outcome.result.name}")
         if name == "start" and mission is not None:
             await self._begin_run(mission)
+            # the ACK reports the boat's state: RUNNING there counts as seen running
+            if outcome.state in (m.State.RUNNING, m.State.HOLD):
+                mission["seen_running"] = True
         elif name == "abort" and self.active is not None:
             await self._end_run("aborted")
         return answer
@@ -354,15 +357,18 @@ class BoatService:
     def _check_finished(self, state: int, wire_id: int | None) -> None:
         """End the run when the boat reports DONE or ABORTED for the running mission.
 
-        Frames sent before the boat took the START still carry the previous
-        state, so DONE counts only after RUNNING or HOLD has been seen.
+        Telemetry frames sent before the boat took the START still carry the
+        previous state, so there DONE counts only after RUNNING or HOLD has been
+        seen (in a frame or in START's ACK); a HEARTBEAT names the mission, so
+        DONE for the running mission's id counts at once.
         """
         mission = self.active
         if mission is None or (wire_id is not None and wire_id != mission["wire_id"]):
             return
         if state in (m.State.RUNNING, m.State.HOLD):
             mission["seen_running"] = True
-        elif state in (m.State.DONE, m.State.ABORTED) and mission.get("seen_running"):
+        elif state in (m.State.DONE, m.State.ABORTED) and (mission.get("seen_running")
+                                                            or wire_id is not None):
             mission["seen_running"] = False
             final = "completed" if state == m.State.DONE else "aborted"
             task = asyncio.create_task(self._end_run(final))

@@ -28,6 +28,15 @@ def plan_in_worker(scenario: dict[str, Any], planner: str, seed: int | None) -> 
 WORKER_NICENESS = 19
 
 
+def outdated_by(planned: dict[str, Any], working: Scenario) -> list[str]:
+    """The top-level fields in which the working scenario differs from the one a plan was
+    made for, when the plan was made for the working scenario (same name); else []."""
+    now = working.model_dump(mode="json")
+    if planned.get("name") != now["name"]:
+        return []
+    return sorted(k for k in planned.keys() | now.keys() if planned.get(k) != now.get(k))
+
+
 def init_worker() -> None:
     """Plan workers: tuned allocator, and the CPU only when the server does not want it.
 
