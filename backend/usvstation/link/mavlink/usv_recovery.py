@@ -416,6 +416,24 @@ enums["USV_MISSION_RESULT"][9] = EnumEntry("USV_MISSION_EXPIRED", """The staging
 USV_MISSION_RESULT_ENUM_END = 10
 enums["USV_MISSION_RESULT"][10] = EnumEntry("USV_MISSION_RESULT_ENUM_END", """""")
 
+# USV_COMMAND_REASON
+enums["USV_COMMAND_REASON"] = Enum()
+enums["USV_COMMAND_REASON"].bitmask = False
+USV_COMMAND_REASON_NONE = 0
+enums["USV_COMMAND_REASON"][0] = EnumEntry("USV_COMMAND_REASON_NONE", """Accepted.""")
+USV_COMMAND_REASON_NO_MISSION = 1
+enums["USV_COMMAND_REASON"][1] = EnumEntry("USV_COMMAND_REASON_NO_MISSION", """START: the boat holds no active mission.""")
+USV_COMMAND_REASON_MISSION_MISMATCH = 2
+enums["USV_COMMAND_REASON"][2] = EnumEntry("USV_COMMAND_REASON_MISSION_MISMATCH", """START: x/y differ from the id/CRC-32 of the mission the boat holds.""")
+USV_COMMAND_REASON_WRONG_STATE = 3
+enums["USV_COMMAND_REASON"][3] = EnumEntry("USV_COMMAND_REASON_WRONG_STATE", """Not allowed in the boat's state (START unless READY, RESUME unless HOLD/FAILSAFE/RUNNING, HOLD unless RUNNING/HOLD/FAILSAFE).""")
+USV_COMMAND_REASON_TOO_FAR = 4
+enums["USV_COMMAND_REASON"][4] = EnumEntry("USV_COMMAND_REASON_TOO_FAR", """START: the boat is farther than the start distance (10 m by default) from waypoint 0; the distance is in STATUSTEXT.""")
+USV_COMMAND_REASON_UNKNOWN_COMMAND = 5
+enums["USV_COMMAND_REASON"][5] = EnumEntry("USV_COMMAND_REASON_UNKNOWN_COMMAND", """Not a recovery command (with MAV_RESULT_UNSUPPORTED).""")
+USV_COMMAND_REASON_ENUM_END = 6
+enums["USV_COMMAND_REASON"][6] = EnumEntry("USV_COMMAND_REASON_ENUM_END", """""")
+
 # MAV_CMD
 enums["MAV_CMD"] = Enum()
 enums["MAV_CMD"].bitmask = False
@@ -6647,7 +6665,9 @@ class MAVLink_usv_mission_begin_message(MAVLink_message):
     and CRC it is a retry and keeps what was staged. With swap_at_ms
     non-zero and the boat RUNNING, the verified mission replaces the
     running one at that boat time (hot swap); its item times count
-    from that instant.
+    from that instant. A swap whose instant has passed at END is
+    refused (DENIED); a scheduled swap is dropped (STATUSTEXT) when
+    the boat is not RUNNING at the instant, and by ABORT.
     """
 
     id = MAVLINK_MSG_ID_USV_MISSION_BEGIN
@@ -17748,12 +17768,15 @@ class MAVLink(object):
         CRC it is a retry and keeps what was staged. With swap_at_ms
         non-zero and the boat RUNNING, the verified mission replaces
         the running one at that boat time (hot swap); its item times
-        count from that instant.
+        count from that instant. A swap whose instant has passed at
+        END is refused (DENIED); a scheduled swap is dropped
+        (STATUSTEXT) when the boat is not RUNNING at the instant, and
+        by ABORT.
 
         target_system             : System ID of the boat. (type:uint8_t)
         target_component          : Component ID. (type:uint8_t)
         mission_id                : Mission id chosen by the station (non-zero). (type:uint32_t)
-        crc32                     : CRC-32 (IEEE) over the items' wire payloads from mission_id on, in seq order. (type:uint32_t)
+        crc32                     : CRC-32 (IEEE 802.3, as zlib.crc32) over the items in seq order, each as 24 bytes little-endian: mission_id u32, lat i32, lon i32, t_ms u32, seq u16, speed_cms u16, course_cdeg u16, heading_cdeg u16 (the MAVLink wire order of USV_MISSION_ITEM without the target bytes). (type:uint32_t)
         count                     : Number of items (at least 2). (type:uint16_t)
         swap_at_ms                : Boat uptime at which to swap a RUNNING mission for this one; 0: stage for START. [ms] (type:uint32_t)
 
@@ -17766,12 +17789,15 @@ class MAVLink(object):
         CRC it is a retry and keeps what was staged. With swap_at_ms
         non-zero and the boat RUNNING, the verified mission replaces
         the running one at that boat time (hot swap); its item times
-        count from that instant.
+        count from that instant. A swap whose instant has passed at
+        END is refused (DENIED); a scheduled swap is dropped
+        (STATUSTEXT) when the boat is not RUNNING at the instant, and
+        by ABORT.
 
         target_system             : System ID of the boat. (type:uint8_t)
         target_component          : Component ID. (type:uint8_t)
         mission_id                : Mission id chosen by the station (non-zero). (type:uint32_t)
-        crc32                     : CRC-32 (IEEE) over the items' wire payloads from mission_id on, in seq order. (type:uint32_t)
+        crc32                     : CRC-32 (IEEE 802.3, as zlib.crc32) over the items in seq order, each as 24 bytes little-endian: mission_id u32, lat i32, lon i32, t_ms u32, seq u16, speed_cms u16, course_cdeg u16, heading_cdeg u16 (the MAVLink wire order of USV_MISSION_ITEM without the target bytes). (type:uint32_t)
         count                     : Number of items (at least 2). (type:uint16_t)
         swap_at_ms                : Boat uptime at which to swap a RUNNING mission for this one; 0: stage for START. [ms] (type:uint32_t)
 
