@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from usvstation.geo import RampFrame
 from usvstation.link.transport import ByteStream, open_stream
 from usvstation.scenario import Scenario
-from usvstation.sim.boat import BoatConfig, BoatProtocol
+from usvstation.sim.boat import BoatConfig, BoatProtocol, NonVolatile
 from usvstation.sim.sensors import GpsNoise
 from usvstation.sim.vehicle import KinematicVehicle, Vehicle
 
@@ -82,19 +82,20 @@ class SimulatedBoat:
             for line in self.boat.log:
                 self.log(line)
         self.boat.log.clear()
-        data = self.boat.data_to_send()
+        data = self.boat.data_to_send(time.monotonic())
         if data:
             with contextlib.suppress(ConnectionError, OSError):
                 await stream.write(data)
 
 
 def make_boat(frame: RampFrame, *, x: float = 85.0, y: float = 10.0, heading_deg: float = 180.0,
-              config: BoatConfig | None = None, seed: int = 0,
-              vehicle: Vehicle | None = None) -> BoatProtocol:
-    """A simulated boat at ramp-frame (x, y) with a KinematicVehicle unless one is given."""
+              config: BoatConfig | None = None, seed: int = 0, key: bytes | None = None,
+              vehicle: Vehicle | None = None, nv: NonVolatile | None = None) -> BoatProtocol:
+    """A simulated boat at ramp-frame (x, y) with a KinematicVehicle unless one is given;
+    signing with `key` (None: unsigned, --insecure-link), its clock on the wall clock."""
     vehicle = vehicle or KinematicVehicle(x, y, math.radians(heading_deg))
-    return BoatProtocol(vehicle, frame, config or BoatConfig(), gps=GpsNoise(seed=seed),
-                        now=time.monotonic())
+    return BoatProtocol(vehicle, frame, config or BoatConfig(), key=key, nv=nv,
+                        gps=GpsNoise(seed=seed), now=time.monotonic(), unix_time=time.time())
 
 
 async def serve_on_url(boat: BoatProtocol, url: str, baud: int, *,
