@@ -128,6 +128,9 @@ def build_parser() -> argparse.ArgumentParser:
                      help="signing key file shared with the station")
     sim.add_argument("--insecure-link", action="store_true",
                      help="accept unsigned frames (only without --link-key)")
+    sim.add_argument("--nv-file", type=Path, metavar="PATH",
+                     help="the boat's non-volatile memory (signing replay floor) across "
+                     "restarts, like the STM32's flash")
 
     link_key = sub.add_parser("link-key", help="manage usv-link signing keys")
     link_key_sub = link_key.add_subparsers(dest="key_command", required=True)

@@ -10,7 +10,13 @@ import sys
 from usvstation.geo import RampFrame
 from usvstation.link.transport import PtyPair
 from usvstation.sim.boat import BoatConfig
-from usvstation.sim.runner import SimulatedBoat, make_boat, make_vehicle, serve_on_url
+from usvstation.sim.runner import (
+    SimulatedBoat,
+    load_nv,
+    make_boat,
+    make_vehicle,
+    serve_on_url,
+)
 
 
 def _say(text: str) -> None:
@@ -34,7 +40,8 @@ async def run_sim(args: argparse.Namespace) -> int:
                         telemetry_hz=args.telemetry_hz, failsafe_timeout_s=args.failsafe_s,
                         sim_speed=args.sim_speed, baud=args.baud)
     vehicle = make_vehicle(args.vehicle, scenario, args.sea_state)
-    boat = make_boat(frame, config=config, seed=args.seed, vehicle=vehicle, key=key,
+    nv = load_nv(args.nv_file) if args.nv_file is not None else None
+    boat = make_boat(frame, config=config, seed=args.seed, vehicle=vehicle, key=key, nv=nv,
                      x=scenario.start.x, y=scenario.start.y,
                      heading_deg=scenario.start.heading_deg)
     stop = asyncio.Event()
@@ -49,13 +56,14 @@ async def run_sim(args: argparse.Namespace) -> int:
         pair = PtyPair()
         _say(f"boat on {pair.slave_path} ({detail})")
         try:
-            await SimulatedBoat(boat, _say).run(pair.master_stream(), stop)
+            await SimulatedBoat(boat, _say, args.nv_file).run(pair.master_stream(), stop)
         finally:
             pair.close()
         return 0
     _say(f"boat on {args.link} ({detail})")
     with contextlib.suppress(asyncio.CancelledError):
-        await serve_on_url(boat, args.link, args.baud, log=_say, stop=stop)
+        await serve_on_url(boat, args.link, args.baud, log=_say, stop=stop,
+                           nv_path=args.nv_file)
     return 0
 
 

@@ -4,10 +4,13 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
+import json
 import math
+import os
 import time
 from collections.abc import Awaitable, Callable
 from dataclasses import dataclass
+from pathlib import Path
 
 from usvstation.geo import RampFrame
 from usvstation.link.transport import ByteStream, open_stream
@@ -49,9 +52,11 @@ class SimulatedBoat:
 
     boat: BoatProtocol
     log: Callable[[str], None] | None = None
+    nv_path: Path | None = None  # the boat's "flash": its NonVolatile, written on change
 
     async def run(self, stream: ByteStream, stop: asyncio.Event | None = None) -> str:
         """Serve until the stream closes (returns why) or `stop` is set."""
+        self._saved_floor = self.boat.nv.sign_floor
         stop = stop or asyncio.Event()
         reader = asyncio.get_running_loop().create_task(self._read(stream))
         try:
@@ -78,6 +83,9 @@ class SimulatedBoat:
             await self._flush(stream)
 
     async def _flush(self, stream: ByteStream) -> None:
+        if self.nv_path is not None and self.boat.nv.sign_floor != self._saved_floor:
+            self._saved_floor = self.boat.nv.sign_floor
+            save_nv(self.nv_path, self.boat.nv)
         if self.log is not None:
             for line in self.boat.log:
                 self.log(line)
@@ -86,6 +94,23 @@ class SimulatedBoat:
         if data:
             with contextlib.suppress(ConnectionError, OSError):
                 await stream.write(data)
+
+
+def load_nv(path: Path) -> NonVolatile:
+    """The boat's non-volatile memory from a JSON file (missing: a factory-new boat)."""
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        return NonVolatile()
+    except (OSError, ValueError) as exc:
+        raise ValueError(f"nv file {path}: {exc}") from None
+    return NonVolatile(sign_floor=int(data.get("sign_floor", 0)))
+
+
+def save_nv(path: Path, nv: NonVolatile) -> None:
+    tmp = path.with_suffix(path.suffix + ".tmp")
+    tmp.write_text(json.dumps({"sign_floor": nv.sign_floor}), encoding="utf-8")
+    os.replace(tmp, path)
 
 
 def make_boat(frame: RampFrame, *, x: float = 85.0, y: float = 10.0, heading_deg: float = 180.0,
@@ -100,11 +125,11 @@ def make_boat(frame: RampFrame, *, x: float = 85.0, y: float = 10.0, heading_deg
 
 async def serve_on_url(boat: BoatProtocol, url: str, baud: int, *,
                        log: Callable[[str], None] = print, reconnect_s: float = 1.0,
-                       stop: asyncio.Event | None = None,
+                       stop: asyncio.Event | None = None, nv_path: Path | None = None,
                        opener: Callable[[str, int], Awaitable[ByteStream]] = open_stream) -> None:
     """Serve on a serial device or URL, reopening it when it closes or fails to open."""
     stop = stop or asyncio.Event()
-    sim = SimulatedBoat(boat, log)
+    sim = SimulatedBoat(boat, log, nv_path)
     while not stop.is_set():
         try:
             stream = await opener(url, baud)
