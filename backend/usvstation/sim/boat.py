@@ -156,7 +156,7 @@ class BoatProtocol:
     # ---- I/O boundary
     @property
     def uptime_ms(self) -> int:
-        return int(self.boat_time * 1000) & 0xFFFFFFFF
+        return int(round(self.boat_time * 1000, 6)) & 0xFFFFFFFF
 
     def _stamp(self, now: float) -> int:
         return wire.signing_time(self.unix_time + now - self.started)
@@ -488,12 +488,27 @@ class BoatProtocol:
         dt_link = max(0.0, now - self.last_now)
         self.last_now = now
         target = self.boat_time + dt_link * self.cfg.sim_speed
-        st = self.staging
-        if st is not None and st.state == ST_VERIFIED and st.swap_at_ms:
-            swap_t = st.swap_at_ms / 1000
-            if swap_t <= target:
-                self._advance(swap_t - self.boat_time)
+        while True:  # each timer at its own boat-time instant, in order
+            st = self.staging
+            swap_t = st.swap_at_ms / 1000 if st is not None and st.state == ST_VERIFIED \
+                and st.swap_at_ms else math.inf
+            due = min(swap_t, self.next_heartbeat, self.next_telemetry)
+            if due > target:
+                break
+            self._advance(due - self.boat_time)
+            if due == swap_t:
                 self._do_swap(now)
+                continue
+            full = False
+            if self.next_heartbeat <= due:
+                self._heartbeat(now)
+                self.next_heartbeat = _next_on_grid(self.next_heartbeat, self.boat_time,
+                                                    self.cfg.heartbeat_period_s)
+                full = True
+            if self.next_telemetry <= due:
+                self._send_telemetry(now, full)
+                self.next_telemetry = _next_on_grid(self.next_telemetry, self.boat_time,
+                                                    1.0 / self.cfg.telemetry_hz)
         self._advance(target - self.boat_time)
         if self.guided_until is not None and now >= self.guided_until:
             self._clear_guidance()
@@ -509,16 +524,6 @@ class BoatProtocol:
             self.expired_id, self.staging = st.mission_id, None
             self._text(mav.MAV_SEVERITY_WARNING, f"staging of {st.mission_id} expired", now)
             self._report(now)
-        full = False
-        if self.boat_time >= self.next_heartbeat:
-            self._heartbeat(now)
-            self.next_heartbeat = _next_on_grid(self.next_heartbeat, self.boat_time,
-                                                self.cfg.heartbeat_period_s)
-            full = True
-        if self.boat_time >= self.next_telemetry:
-            self._send_telemetry(now, full)
-            self.next_telemetry = _next_on_grid(self.next_telemetry, self.boat_time,
-                                                1.0 / self.cfg.telemetry_hz)
 
     def _do_swap(self, now: float) -> None:
         st, new = self.staging, self._swap_mission
@@ -550,13 +555,14 @@ class BoatProtocol:
         self._report(now)
 
     def _advance(self, dt: float) -> None:
-        while dt > 1e-9:
-            h = min(dt, self.cfg.max_step_s)
+        end = self.boat_time + dt
+        while end - self.boat_time > 1e-9:
+            h = min(end - self.boat_time, self.cfg.max_step_s)
             self.vehicle.step(h)
             s = self.vehicle.state
             self.battery.step(h, s.thrust_left, s.thrust_right)
             self.boat_time += h
-            dt -= h
+        self.boat_time = max(self.boat_time, end)
 
     def next_deadline(self) -> float:
         """Link time of the next timer (telemetry, heartbeat, failsafe, guidance, swap)."""
