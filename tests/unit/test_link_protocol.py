@@ -67,6 +67,16 @@ def test_upload_activates_the_identical_mission_and_readback_matches():
     h.station.start_readback(m.mission_id, m.count, h.t)
     assert h.run(5, until=lambda: h.of(ReadbackResult))
     assert h.of(ReadbackResult)[-1].items == m.items
+    assert h.station.refused == {} and h.boat.refusals == {}  # nothing out of order
+
+
+def test_acks_overtaking_telemetry_keep_signing_timestamps_rising():
+    h = Harness(boat_cfg=BoatConfig(baud=9600, telemetry_hz=20))
+    h.connect()
+    m = make_mission(7)
+    assert _upload(h, m).ok and _command(h, "start", m).accepted
+    h.run(3.0)
+    assert h.station.refused == {}
 
 
 @pytest.mark.parametrize(("loss", "seed"), [(0.1, 1), (0.2, 2), (0.3, 3), (0.5, 4)])

@@ -150,7 +150,7 @@ class BoatProtocol:
         self._text_budget_at = -math.inf
         self._swap_mission: ActiveMission | None = None
         self._urgent = bytearray()
-        self._telemetry: deque[bytes] = deque()
+        self._telemetry: deque[Any] = deque()  # messages, signed when they go out
         self._line_free_at = now
 
     # ---- I/O boundary
@@ -180,21 +180,21 @@ class BoatProtocol:
         if baud:
             self._line_free_at = max(self._line_free_at, t) + len(out) * 10 / baud
         while self._telemetry and (not baud or self._line_free_at <= t):
-            frame = self._telemetry.popleft()
+            # signed now, not when queued: signing timestamps must rise in sending order
+            frame = self.codec.encode(self._telemetry.popleft(), self._stamp(t))
             out += frame
             if baud:
                 self._line_free_at = max(self._line_free_at, t) + len(frame) * 10 / baud
         return out
 
     def _send(self, msg: Any, now: float, *, telemetry: bool = False) -> None:
-        data = self.codec.encode(msg, self._stamp(now))
         if telemetry:
-            self._telemetry.append(data)
+            self._telemetry.append(msg)
             while len(self._telemetry) > 16:
                 self._telemetry.popleft()
                 self.telemetry_dropped += 1
         else:
-            self._urgent += data
+            self._urgent += self.codec.encode(msg, self._stamp(now))
 
     def _text(self, severity: int, text: str, now: float) -> None:
         self.log.append(text)
