@@ -52,6 +52,7 @@ def test_plan_upload_start_complete_and_export(station):
     # a pty loses and corrupts nothing: nothing refused, no other systems
     assert boat["link"]["frames"] > 0
     assert boat["link"]["frames_bad"] == 0 and boat["link"]["refused"] == {}
+    assert boat["link"]["frames_lost"] == 0
     assert boat["link"]["other_systems"] == {}
     plan_job = station.wait_plan(c.post("/api/plans", json={"seed": 1}).json()["id"])
     assert plan_job["status"] == "done"
