@@ -169,9 +169,11 @@ def test_no_answer_is_504(service):
 
 def test_start_names_its_mission_and_409s_for_no_mission_or_another(service):
     async def body(svc, pipe, boat, plans):
-        with pytest.raises(BoatError, match="send mission_id"):
+        with pytest.raises(BoatError, match="no verified mission"):
             await svc.command("start")
         a = await _upload(svc, plans, "a")
+        with pytest.raises(BoatError, match="send mission_id"):
+            await svc.command("start")
         with pytest.raises(BoatError, match="no mission 'zzz'") as err:
             await svc.command("start", "zzz")
         assert err.value.status == 404

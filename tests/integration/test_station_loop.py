@@ -71,6 +71,7 @@ def test_plan_upload_start_complete_and_export(station):
     ack = c.post("/api/boat/command", json={"command": "start", "mission_id": mission["id"]})
     assert ack.status_code == 200, ack.text
     assert ack.json()["result"] == "ACCEPTED" and ack.json()["mission"] == mission["id"]
+    assert ack.json()["state"] == "RUNNING"
     mission = station.wait(f"/api/missions/{mission['id']}", "state", ("active",),
                            plan["metrics"]["duration_s"] / 5 + 30)
     assert mission["state"] == "completed"
@@ -117,7 +118,7 @@ def test_command_rules(station):
     c = station.client
     # START names its mission; a completed one is no longer startable
     r = c.post("/api/boat/command", json={"command": "start"})
-    assert r.status_code == 409 and "send mission_id" in r.json()["detail"]
+    assert r.status_code == 409 and "no verified mission" in r.json()["detail"]
     for done in [m for m in c.get("/api/missions").json() if m["state"] == "completed"]:
         r = c.post("/api/boat/command", json={"command": "start", "mission_id": done["id"]})
         assert r.status_code == 409 and "refused START: WRONG_STATE" in r.json()["detail"]

@@ -234,6 +234,8 @@ class BoatService:
         rec: MissionRecord | None = None
         if name == "start":
             if mission_id is None:
+                if not any(r.state == MissionStatus.VERIFIED for r in self.missions.values()):
+                    raise BoatError(409, "no verified mission to start: upload a plan first")
                 raise BoatError(409, "START names its mission: send mission_id")
             rec = self.missions.get(mission_id)
             if rec is None:
@@ -251,6 +253,11 @@ class BoatService:
             raise BoatError(503, str(exc)) from None
         if outcome.result is None:
             raise BoatError(504, f"the boat did not acknowledge {name.upper()}: {outcome.error}")
+        acked_at = link.protocol.now
+        for _ in range(50):  # the boat reports its new state right after the ACK
+            if link.protocol.report_at >= acked_at:
+                break
+            await asyncio.sleep(0.01)
         report = link.report
         answer = {"command": name, "result": _result_name(outcome.result),
                   "reason": outcome.reason or None,
