@@ -49,7 +49,12 @@ class _End:
         self.pipe, self.rx, self.tx, self.filter_out = pipe, rx, tx, filter_out
 
     async def read(self) -> bytes:
-        return await self.rx.get()
+        while True:
+            item = await self.rx.get()
+            if not isinstance(item, _End):
+                return item
+            if item is self:  # closed: the end of this reader (another end's mark is skipped)
+                return b""
 
     async def write(self, data: bytes) -> None:
         if self.pipe.cut:
@@ -60,7 +65,7 @@ class _End:
             self.tx.put_nowait(data)
 
     async def close(self) -> None:
-        self.rx.put_nowait(b"")
+        self.rx.put_nowait(self)
 
 
 class Plans:
@@ -218,6 +223,32 @@ def test_boat_reboot_makes_a_verified_mission_gone(service):
         boat.active, boat.state = None, 0
         await _wait(lambda: svc.missions[a].state == MissionStatus.GONE, 3.0)
         assert "no longer holds" in svc.missions[a].error
+
+    service(body)
+
+
+def test_station_restart_mid_run_rederives_the_mission_and_hold_acts(service, tmp_path):
+    async def body(svc, pipe, boat, plans):
+        a = await _upload(svc, plans, "a")
+        await svc.command("start", a)
+        await _wait(lambda: svc.missions[a].run is not None and svc.missions[a].run > 0)
+        first_run = svc.missions[a].run
+        await svc.stop()  # the station process ends; the boat runs on
+        again = BoatService(svc.settings, svc.store, LiveHub(), plans,
+                            stream_factory=lambda: _ready(pipe.station_end()))
+        from usvstation.scenario import load_scenario
+
+        await again.start(load_scenario("case1"))
+        try:
+            await _wait(lambda: again.link_up and a in again.missions
+                        and again.missions[a].state == MissionStatus.ACTIVE
+                        and (again.missions[a].run or 0) > first_run)
+            answer = await again.command("hold")
+            assert answer["result"] == "ACCEPTED" and answer["state"] == "HOLD"
+            assert boat.state == 3 and boat.session == again.link.protocol.session
+            await _wait(lambda: boat.vehicle.state.speed < 0.5, 3.0)
+        finally:
+            await again.stop()
 
     service(body)
 

@@ -74,6 +74,9 @@ class BoatService:
         rows = await asyncio.to_thread(recover_missions, self.store)
         self.missions = {k: MissionRecord.from_row(v) for k, v in rows.items()}
         await asyncio.to_thread(self.store.close_stale_runs)
+        for rec in self.missions.values():
+            if rec.state == MissionStatus.ACTIVE:
+                rec.run = None  # its run closed as interrupted; the boat's report reopens one
         if self.settings.link == "sim" and self._stream_factory is None:
             if scenario.origin is None:
                 raise ValueError("the simulated boat needs a working scenario with an origin")
