@@ -44,7 +44,7 @@ class LinkConfig:
     window: int = 8  # mission items in flight
     max_attempts: int = 10  # per mission message
     command_attempts: int = 5
-    min_timeout_s: float = 0.05
+    min_timeout_s: float = 0.2  # radio, serial driver and scheduling latency
     max_timeout_s: float = 3.0
     link_id: int = 0  # MAVLink signing link id of this station
 
@@ -208,7 +208,8 @@ Event = Any
 
 class RttEstimator:
     """Retry timeout from measured round trips (Jacobson/Karels, RFC 6298 constants),
-    never below two frame airtimes at the baud, never above max_timeout_s."""
+    never below min_timeout_s nor two frame airtimes at the baud, never above
+    max_timeout_s. Round trips count from the frame's departure at the baud."""
 
     def __init__(self, cfg: LinkConfig) -> None:
         self.cfg = cfg
@@ -390,7 +391,9 @@ class MissionUploader:
             if not ok and ack.result != mav.USV_MISSION_BAD_SEQ:
                 return self._refused(f"item {ack.seq}", ack, now)
             if ack.seq > self.base:
-                self._sample(ack.seq - 1, now)
+                covered = range(self.base, min(ack.seq, self.mission.count))
+                if all(self.sent_at.get(k, -INF) > -INF for k in covered):
+                    self._sample(ack.seq - 1, now)  # Karn: nothing it covers was resent
                 for k in range(self.base, min(ack.seq, self.mission.count)):
                     self.deadlines.pop(k, None)
                 self.base = min(ack.seq, self.mission.count)
