@@ -7,11 +7,10 @@ import json
 from typing import Any
 
 from usvstation.config import Settings, resolve_token
-from usvstation.link import messages as m
-from usvstation.link.protocol import BoatHeartbeat, LinkUp
+from usvstation.link.protocol import BoatReport
 from usvstation.scenario import Scenario, bundled_scenario_dir, parse_scenario
 from usvstation.services.alerts import LinkAlerts
-from usvstation.services.boat import BoatService, _name
+from usvstation.services.boat import BoatService
 from usvstation.services.hub import LiveHub
 from usvstation.services.monitor import MonitorService
 from usvstation.services.plans import PlanService
@@ -54,13 +53,11 @@ class Station:
             self.boat.link.add_listener(self._publish_heartbeat)
 
     def _publish_heartbeat(self, ev: object) -> None:
-        """Each boat HEARTBEAT to the live clients (about 1 Hz) with the link's counters
-        (as in GET /api/boat `link`), so no console polls for them."""
-        if isinstance(ev, BoatHeartbeat | LinkUp):
-            hb = ev.heartbeat
-            self.hub.publish("heartbeat", {"state": _name(m.State, hb.state),
-                                           "mode": _name(m.Mode, hb.mode),
-                                           "mission_id": hb.mission_id,
+        """Each boat report (USV_MISSION_STATE, about 1 Hz) to the live clients with the
+        link's counters (as in GET /api/boat `link`), so no console polls for them."""
+        if isinstance(ev, BoatReport):
+            rep = ev.report
+            self.hub.publish("heartbeat", {"state": rep.state, "mission_id": rep.active_id,
                                            "link": self.boat.snapshot()["link"]})
 
     async def stop(self) -> None:

@@ -14,18 +14,24 @@ const BOAT_POLL_MS = 30000;
 const AGE_TICK_MS = 500;
 const ages = { hb: null, tm: null }; // performance.now() of the last heartbeat / telemetry
 
+/** The boat's reported state and the mission it holds (usv-link 2 USV_MISSION_STATE). */
+function boatText(b) {
+  return b.mission_id ? `${b.state} (mission ${b.mission_id})` : b.state;
+}
+
 async function pollBoat() {
   try {
     const boat = await api.get('/api/boat');
     const link = boat.link;
     setPill($('link-state'), link.up ? `link up${link.simulated ? ' (simulated boat)' : ''}`
       : `link down${link.error ? `: ${link.error}` : ''}`, link.up ? 'ok' : 'bad');
+    if (link.warning) setPill($('link-state'), `${$('link-state').textContent}: ${link.warning}`, 'bad');
     const now = performance.now();
     if (link.heartbeat_age_s != null) ages.hb = now - link.heartbeat_age_s * 1000;
     if (link.telemetry_age_s != null) ages.tm = now - link.telemetry_age_s * 1000;
     showAges();
     showCounters(link);
-    if (boat.boat) $('boat-state').textContent = `${boat.boat.state} (${boat.boat.mode})`;
+    if (boat.boat) $('boat-state').textContent = boatText(boat.boat);
   } catch (err) {
     setPill($('link-state'), `station unreachable`, 'bad');
   }
@@ -95,7 +101,7 @@ function handleLive(type, data) {
         onTelemetry(data.telemetry, false);
       }
       loadAlerts();
-      if (data.boat) $('boat-state').textContent = `${data.boat.state} (${data.boat.mode})`;
+      if (data.boat) $('boat-state').textContent = boatText(data.boat);
       if (data.run != null && (!state.shown || state.shown.id !== data.run)) {
         showRun(data.run, { live: true });
       }
@@ -126,7 +132,7 @@ function handleLive(type, data) {
       break;
     case 'heartbeat':
       ages.hb = performance.now();
-      $('boat-state').textContent = `${data.state} (${data.mode})`;
+      $('boat-state').textContent = boatText(data);
       if (data.link) showCounters(data.link);
       break;
     case 'status':

@@ -9,7 +9,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from usvstation.link.protocol import DefinitionMismatch, LinkDown, LinkUp
+from usvstation.link.protocol import LinkDown, LinkUp
 from usvstation.world.monitor import AlertEvent
 
 
@@ -21,12 +21,11 @@ class LinkAlerts:
         self.link_lost = False
 
     def on_link_event(self, ev: object) -> None:
-        if isinstance(ev, LinkDown | DefinitionMismatch):
+        if isinstance(ev, LinkDown):
             if not self.link_lost:
                 self.link_lost = True
-                reason = ev.reason if isinstance(ev, LinkDown) else ev.message
                 self.raise_alert(AlertEvent("warning", "link_lost",
-                                            f"link to the boat lost: {reason}"))
+                                            f"link to the boat lost: {ev.reason}"))
         elif isinstance(ev, LinkUp) and self.link_lost:
             self.link_lost = False
             self.raise_alert(AlertEvent("advisory", "link_restored", "link to the boat restored"))
