@@ -9,7 +9,10 @@
 #define USV_MAVLINK_H
 
 #define MAVLINK_COMM_NUM_BUFFERS 1
-#define MAVLINK_MAX_SIGNING_STREAMS 4
+/* Field access byte by byte: mavlink_message_t is packed, so its payload is not aligned
+ * (UBSan flags the default word loads; 64-bit loads from it can fault on a Cortex-M3). */
+#define MAVLINK_ALIGNED_FIELDS 0
+#define MAVLINK_MAX_SIGNING_STREAMS 8 /* station, own echo, radios, other boats */
 #include "usv_recovery/mavlink.h"
 
 #endif
