@@ -8,7 +8,7 @@
 
 typedef struct __mavlink_usv_mission_begin_t {
  uint32_t mission_id; /*<  Mission id chosen by the station (non-zero).*/
- uint32_t crc32; /*<  CRC-32 (IEEE) over the items' wire payloads from mission_id on, in seq order.*/
+ uint32_t crc32; /*<  CRC-32 (IEEE 802.3, as zlib.crc32) over the items in seq order, each as 24 bytes little-endian: mission_id u32, lat i32, lon i32, t_ms u32, seq u16, speed_cms u16, course_cdeg u16, heading_cdeg u16 (the MAVLink wire order of USV_MISSION_ITEM without the target bytes).*/
  uint32_t swap_at_ms; /*< [ms] Boat uptime at which to swap a RUNNING mission for this one; 0: stage for START.*/
  uint16_t count; /*<  Number of items (at least 2).*/
  uint8_t target_system; /*<  System ID of the boat.*/
@@ -61,7 +61,7 @@ typedef struct __mavlink_usv_mission_begin_t {
  * @param target_system  System ID of the boat.
  * @param target_component  Component ID.
  * @param mission_id  Mission id chosen by the station (non-zero).
- * @param crc32  CRC-32 (IEEE) over the items' wire payloads from mission_id on, in seq order.
+ * @param crc32  CRC-32 (IEEE 802.3, as zlib.crc32) over the items in seq order, each as 24 bytes little-endian: mission_id u32, lat i32, lon i32, t_ms u32, seq u16, speed_cms u16, course_cdeg u16, heading_cdeg u16 (the MAVLink wire order of USV_MISSION_ITEM without the target bytes).
  * @param count  Number of items (at least 2).
  * @param swap_at_ms [ms] Boat uptime at which to swap a RUNNING mission for this one; 0: stage for START.
  * @return length of the message in bytes (excluding serial stream start sign)
@@ -105,7 +105,7 @@ static inline uint16_t mavlink_msg_usv_mission_begin_pack(uint8_t system_id, uin
  * @param target_system  System ID of the boat.
  * @param target_component  Component ID.
  * @param mission_id  Mission id chosen by the station (non-zero).
- * @param crc32  CRC-32 (IEEE) over the items' wire payloads from mission_id on, in seq order.
+ * @param crc32  CRC-32 (IEEE 802.3, as zlib.crc32) over the items in seq order, each as 24 bytes little-endian: mission_id u32, lat i32, lon i32, t_ms u32, seq u16, speed_cms u16, course_cdeg u16, heading_cdeg u16 (the MAVLink wire order of USV_MISSION_ITEM without the target bytes).
  * @param count  Number of items (at least 2).
  * @param swap_at_ms [ms] Boat uptime at which to swap a RUNNING mission for this one; 0: stage for START.
  * @return length of the message in bytes (excluding serial stream start sign)
@@ -152,7 +152,7 @@ static inline uint16_t mavlink_msg_usv_mission_begin_pack_status(uint8_t system_
  * @param target_system  System ID of the boat.
  * @param target_component  Component ID.
  * @param mission_id  Mission id chosen by the station (non-zero).
- * @param crc32  CRC-32 (IEEE) over the items' wire payloads from mission_id on, in seq order.
+ * @param crc32  CRC-32 (IEEE 802.3, as zlib.crc32) over the items in seq order, each as 24 bytes little-endian: mission_id u32, lat i32, lon i32, t_ms u32, seq u16, speed_cms u16, course_cdeg u16, heading_cdeg u16 (the MAVLink wire order of USV_MISSION_ITEM without the target bytes).
  * @param count  Number of items (at least 2).
  * @param swap_at_ms [ms] Boat uptime at which to swap a RUNNING mission for this one; 0: stage for START.
  * @return length of the message in bytes (excluding serial stream start sign)
@@ -235,7 +235,7 @@ static inline uint16_t mavlink_msg_usv_mission_begin_encode_status(uint8_t syste
  * @param target_system  System ID of the boat.
  * @param target_component  Component ID.
  * @param mission_id  Mission id chosen by the station (non-zero).
- * @param crc32  CRC-32 (IEEE) over the items' wire payloads from mission_id on, in seq order.
+ * @param crc32  CRC-32 (IEEE 802.3, as zlib.crc32) over the items in seq order, each as 24 bytes little-endian: mission_id u32, lat i32, lon i32, t_ms u32, seq u16, speed_cms u16, course_cdeg u16, heading_cdeg u16 (the MAVLink wire order of USV_MISSION_ITEM without the target bytes).
  * @param count  Number of items (at least 2).
  * @param swap_at_ms [ms] Boat uptime at which to swap a RUNNING mission for this one; 0: stage for START.
  */
@@ -352,7 +352,7 @@ static inline uint32_t mavlink_msg_usv_mission_begin_get_mission_id(const mavlin
 /**
  * @brief Get field crc32 from usv_mission_begin message
  *
- * @return  CRC-32 (IEEE) over the items' wire payloads from mission_id on, in seq order.
+ * @return  CRC-32 (IEEE 802.3, as zlib.crc32) over the items in seq order, each as 24 bytes little-endian: mission_id u32, lat i32, lon i32, t_ms u32, seq u16, speed_cms u16, course_cdeg u16, heading_cdeg u16 (the MAVLink wire order of USV_MISSION_ITEM without the target bytes).
  */
 static inline uint32_t mavlink_msg_usv_mission_begin_get_crc32(const mavlink_message_t* msg)
 {

@@ -80,6 +80,21 @@ typedef enum USV_MISSION_RESULT
 } USV_MISSION_RESULT;
 #endif
 
+/** @brief Why a recovery command was not accepted: sent in COMMAND_ACK.progress (result_param1) with result MAV_RESULT_DENIED or MAV_RESULT_UNSUPPORTED; 0 with MAV_RESULT_ACCEPTED. Details (a distance, a field) follow in STATUSTEXT. */
+#ifndef HAVE_ENUM_USV_COMMAND_REASON
+#define HAVE_ENUM_USV_COMMAND_REASON
+typedef enum USV_COMMAND_REASON
+{
+   USV_COMMAND_REASON_NONE=0, /* Accepted. | */
+   USV_COMMAND_REASON_NO_MISSION=1, /* START: the boat holds no active mission. | */
+   USV_COMMAND_REASON_MISSION_MISMATCH=2, /* START: x/y differ from the id/CRC-32 of the mission the boat holds. | */
+   USV_COMMAND_REASON_WRONG_STATE=3, /* Not allowed in the boat's state (START unless READY, RESUME unless HOLD/FAILSAFE/RUNNING, HOLD unless RUNNING/HOLD/FAILSAFE). | */
+   USV_COMMAND_REASON_TOO_FAR=4, /* START: the boat is farther than the start distance (10 m by default) from waypoint 0; the distance is in STATUSTEXT. | */
+   USV_COMMAND_REASON_UNKNOWN_COMMAND=5, /* Not a recovery command (with MAV_RESULT_UNSUPPORTED). | */
+   USV_COMMAND_REASON_ENUM_END=6, /*  | */
+} USV_COMMAND_REASON;
+#endif
+
 /** @brief Recovery commands, sent as COMMAND_INT. param1: the station's command sequence number (integer, less than 2^24); param2: the station session (random per station start, integer less than 2^24). The boat answers COMMAND_ACK with result_param2 = the sequence number. */
 #ifndef HAVE_ENUM_MAV_CMD
 #define HAVE_ENUM_MAV_CMD
