@@ -532,12 +532,12 @@ int main(int argc, char **argv)
         prev_active = boat.has_active ? boat.mission[boat.active].id : 0u;
     }
     printf("usv_boat_fuzz: %lu inputs (seed %lu) ok; boat sent %lu frames (%lu unparsable); "
-           "refused unsigned %u bad-signature %u replayed %u not-paired %u not-addressed %u; "
+           "refused unsigned %u bad-signature %u replayed %u wrong-sender %u (saturating); "
            "activations %lu, starts %lu, mission changes while running %lu; "
            "inputs per state idle %lu ready %lu running %lu hold %lu done %lu aborted %lu "
            "failsafe %lu\n",
            n, seed, out_frames, out_bad, boat.refused[0], boat.refused[1], boat.refused[2],
-           boat.refused[3], boat.refused[4], activations, starts_ok, swaps, states_seen[0],
+           boat.refused[3], activations, starts_ok, swaps, states_seen[0],
            states_seen[1], states_seen[2], states_seen[3], states_seen[4], states_seen[5],
            states_seen[6]);
     if (getenv("USV_FUZZ_VERBOSE") != NULL) {

@@ -8,7 +8,8 @@
  *
  * A PORT (digits) listens on 127.0.0.1:PORT (0: any free port) for one client at a time,
  * e.g. `usv-station serve --link socket://127.0.0.1:PORT`; anything else is opened as a
- * serial device or pty slave (raw). The boat clock runs --speedup times the wall clock.
+ * serial device or pty slave (raw). The boat clock runs --speedup times the wall clock;
+ * the link timeouts (failsafe, duplicate memory, staging expiry) stay in wall time.
  * The "UART interrupt" is the read() of the main loop: bytes go to usv_boat_rx_byte(),
  * usv_boat_poll() parses them afterwards, as on the microcontroller.
  */
@@ -362,7 +363,10 @@ int main(int argc, char **argv)
                          (uint64_t)tv.tv_usec / 10u;
     cfg.boot_id = random_u32();
     cfg.telemetry_period_ms = (uint32_t)(1000.0 / tel_hz + 0.5);
-    cfg.link_timeout_ms = (uint32_t)(timeout_s * 1000.0 + 0.5);
+    /* the link timeouts count link (wall) time, the boat clock runs --speedup faster */
+    cfg.link_timeout_ms = (uint32_t)(timeout_s * 1000.0 * speedup + 0.5);
+    cfg.dup_expiry_ms = (uint32_t)(USV_DUP_EXPIRY_MS * speedup + 0.5);
+    cfg.staging_expiry_ms = (uint32_t)(USV_STAGING_EXPIRY_MS * speedup + 0.5);
     cfg.start_radius_m = (float)radius;
     cfg.max_speed_mps = 4.0f;
 

@@ -237,7 +237,7 @@ static void fill_state(usv_boat_t *b, mavlink_usv_mission_state_t *s)
         s->staged_crc32 = g->crc32;
         s->staged_received = b->staged_received;
         s->staged_count = g->count;
-        s->swap_at_ms = b->staged_swap_at;
+        s->swap_at_ms = b->staging == USV_STAGING_VERIFIED ? b->staged_swap_at : 0u;
     }
     s->station_session = b->station_session;
 }
@@ -260,7 +260,7 @@ static void send_heartbeat(usv_boat_t *b)
     h.autopilot = MAV_AUTOPILOT_GENERIC;
     h.base_mode = MAV_MODE_FLAG_CUSTOM_MODE_ENABLED;
     if (b->state == USV_BOAT_STATE_RUNNING) {
-        h.base_mode |= MAV_MODE_FLAG_SAFETY_ARMED | MAV_MODE_FLAG_AUTO_ENABLED;
+        h.base_mode |= MAV_MODE_FLAG_AUTO_ENABLED;
     }
     h.custom_mode = b->state;
     if (b->state == USV_BOAT_STATE_FAILSAFE) {
@@ -369,7 +369,7 @@ static void refuse(usv_boat_t *b, int kind)
 static void report_refusals(usv_boat_t *b, uint32_t now)
 {
     static const char *const why[USV_REFUSE_KINDS] = {
-        "unsigned", "bad signature", "replayed", "not paired", "not addressed"};
+        "unsigned", "bad signature", "replayed", "wrong sender"};
     text_t t;
     if (!b->text_pending || !at_or_after(now, b->last_text_ms + USV_TEXT_MIN_MS)) {
         return;
@@ -378,13 +378,11 @@ static void report_refusals(usv_boat_t *b, uint32_t now)
     b->last_text_ms = now;
     text_begin(&t, "refused ");
     tx_str(&t, why[b->last_refusal]);
-    tx_str(&t, " msg ");
-    tx_uint(&t, b->last_refusal_msgid);
-    tx_str(&t, " from ");
+    tx_str(&t, " frame from ");
     tx_uint(&t, b->last_refusal_sysid);
     tx_str(&t, " (");
     tx_uint(&t, b->rejected);
-    tx_str(&t, ")");
+    tx_str(&t, " total)");
     send_text(b, MAV_SEVERITY_WARNING, &t);
 }
 
@@ -436,53 +434,42 @@ static void on_begin(usv_boat_t *b, const mavlink_message_t *msg, uint32_t now)
     mavlink_usv_mission_begin_t m;
     usv_mission_t *g = staged_mission(b);
     text_t t;
+    int under_way = b->state == USV_BOAT_STATE_RUNNING || b->state == USV_BOAT_STATE_HOLD ||
+                    b->state == USV_BOAT_STATE_FAILSAFE;
     mavlink_msg_usv_mission_begin_decode(msg, &m);
     if (m.mission_id == 0u) {
-        send_mission_ack(b, msg, 0, 0, USV_MISSION_OUT_OF_RANGE, STAGE_BEGIN);
-        text_begin(&t, "BEGIN refused: mission_id 0");
-        send_text(b, MAV_SEVERITY_ERROR, &t);
+        send_mission_ack(b, msg, 0, 0, USV_MISSION_UNKNOWN_MISSION, STAGE_BEGIN);
         return;
-    }
-    if (b->staging != USV_STAGING_NONE) {
-        if (g->id == m.mission_id && g->crc32 == m.crc32 && g->count == m.count &&
-            b->staged_swap_at == m.swap_at_ms) {
-            b->staging_touch_ms = now; /* a retry keeps what was staged */
-            send_mission_ack(b, msg, m.mission_id,
-                             b->staging == USV_STAGING_VERIFIED ? g->count : b->staged_received,
-                             USV_MISSION_ACCEPTED, STAGE_BEGIN);
-        } else {
-            send_mission_ack(b, msg, m.mission_id, 0, USV_MISSION_BUSY, STAGE_BEGIN);
-        }
-        return;
-    }
-    if (active_is(b, m.mission_id) && active_mission(b)->crc32 == m.crc32 &&
-        active_mission(b)->count == m.count) {
-        send_mission_ack(b, msg, m.mission_id, m.count, USV_MISSION_ACCEPTED, STAGE_BEGIN);
-        return; /* a late retry of the mission already active */
     }
     if (m.count < 2u || m.count > USV_MAX_ITEMS) {
         send_mission_ack(b, msg, m.mission_id, 0, USV_MISSION_BAD_COUNT, STAGE_BEGIN);
-        text_begin(&t, "BEGIN refused: count ");
+        text_begin(&t, "mission ");
+        tx_uint(&t, m.mission_id);
+        tx_str(&t, ": count ");
         tx_uint(&t, m.count);
-        tx_str(&t, " not in 2..");
+        tx_str(&t, " outside 2..");
         tx_uint(&t, USV_MAX_ITEMS);
-        send_text(b, MAV_SEVERITY_ERROR, &t);
+        send_text(b, MAV_SEVERITY_WARNING, &t);
         return;
     }
-    if (m.swap_at_ms != 0u) {
-        if (b->state != USV_BOAT_STATE_RUNNING || !at_or_after(m.swap_at_ms, now + 1u)) {
-            send_mission_ack(b, msg, m.mission_id, 0, USV_MISSION_DENIED, STAGE_BEGIN);
-            text_begin(&t, b->state != USV_BOAT_STATE_RUNNING ? "hot swap refused: not RUNNING"
-                                                            : "hot swap refused: swap_at_ms past");
-            send_text(b, MAV_SEVERITY_ERROR, &t);
-            return;
-        }
-    } else if (!idle_like(b->state)) {
+    if ((m.swap_at_ms == 0u && under_way) ||
+        (m.swap_at_ms != 0u && b->state != USV_BOAT_STATE_RUNNING)) {
         send_mission_ack(b, msg, m.mission_id, 0, USV_MISSION_DENIED, STAGE_BEGIN);
-        text_begin(&t, "BEGIN refused: mission under way (hot swap needs swap_at_ms)");
-        send_text(b, MAV_SEVERITY_ERROR, &t);
         return;
     }
+    if (b->staging != USV_STAGING_NONE && g->id == m.mission_id && g->crc32 == m.crc32 &&
+        g->count == m.count && b->staged_swap_at == m.swap_at_ms) {
+        b->staging_touch_ms = now; /* a retry keeps what was staged */
+        send_mission_ack(b, msg, m.mission_id,
+                         b->staging == USV_STAGING_VERIFIED ? g->count : b->staged_received,
+                         USV_MISSION_ACCEPTED, STAGE_BEGIN);
+        return;
+    }
+    if (b->staging == USV_STAGING_VERIFIED) { /* a swap is scheduled: ABORT it first */
+        send_mission_ack(b, msg, m.mission_id, 0, USV_MISSION_BUSY, STAGE_BEGIN);
+        return;
+    }
+    /* a new staging (an unfinished one of another mission is replaced) */
     g->id = m.mission_id;
     g->crc32 = m.crc32;
     g->count = m.count;
@@ -499,9 +486,8 @@ static int staged_bit(const usv_boat_t *b, uint16_t i)
     return (b->staged_bits[i >> 3] >> (i & 7u)) & 1u;
 }
 
-/* The field of an item that is out of range, or NULL. */
-static const char *item_problem(const usv_boat_t *b, const usv_mission_t *g,
-                                const mavlink_usv_mission_item_t *it)
+/* The field of an item that is out of range, or NULL (the per-item check). */
+static const char *item_problem(const mavlink_usv_mission_item_t *it)
 {
     if (it->lat < -900000000 || it->lat > 900000000) {
         return "lat";
@@ -521,15 +507,15 @@ static const char *item_problem(const usv_boat_t *b, const usv_mission_t *g,
     if (it->seq == 0u && it->t_ms != 0u) {
         return "t_ms";
     }
-    if (it->seq > 0u && staged_bit(b, (uint16_t)(it->seq - 1u)) &&
-        it->t_ms <= g->t_ms[it->seq - 1u]) {
-        return "t_ms";
-    }
-    if (it->seq + 1u < g->count && staged_bit(b, (uint16_t)(it->seq + 1u)) &&
-        it->t_ms >= g->t_ms[it->seq + 1u]) {
-        return "t_ms";
-    }
     return NULL;
+}
+
+static int item_equals(const usv_mission_t *m, const mavlink_usv_mission_item_t *it)
+{
+    return it->seq < m->count && m->lat[it->seq] == it->lat && m->lon[it->seq] == it->lon &&
+           m->t_ms[it->seq] == it->t_ms && m->speed_cms[it->seq] == it->speed_cms &&
+           m->course_cdeg[it->seq] == it->course_cdeg &&
+           m->heading_cdeg[it->seq] == it->heading_cdeg;
 }
 
 static void on_item(usv_boat_t *b, const mavlink_message_t *msg, uint32_t now)
@@ -539,12 +525,10 @@ static void on_item(usv_boat_t *b, const mavlink_message_t *msg, uint32_t now)
     const char *bad;
     text_t t;
     mavlink_msg_usv_mission_item_decode(msg, &it);
-    if (b->staging != USV_STAGING_RECEIVING || g->id != it.mission_id) {
-        if (b->staging == USV_STAGING_VERIFIED && g->id == it.mission_id) {
-            send_mission_ack(b, msg, it.mission_id, g->count, USV_MISSION_ACCEPTED, STAGE_ITEM);
-        } else if (active_is(b, it.mission_id)) {
+    if (b->staging == USV_STAGING_NONE || g->id != it.mission_id) {
+        if (active_is(b, it.mission_id) && item_equals(active_mission(b), &it)) {
             send_mission_ack(b, msg, it.mission_id, active_mission(b)->count,
-                             USV_MISSION_ACCEPTED, STAGE_ITEM);
+                             USV_MISSION_ACCEPTED, STAGE_ITEM); /* a late retry */
         } else {
             send_mission_ack(b, msg, it.mission_id, 0,
                              it.mission_id == b->dropped_id ? USV_MISSION_EXPIRED
@@ -553,21 +537,24 @@ static void on_item(usv_boat_t *b, const mavlink_message_t *msg, uint32_t now)
         }
         return;
     }
+    if (b->staging == USV_STAGING_VERIFIED) {
+        send_mission_ack(b, msg, it.mission_id, g->count, USV_MISSION_ACCEPTED, STAGE_ITEM);
+        return;
+    }
     if (it.seq >= g->count) {
         send_mission_ack(b, msg, it.mission_id, b->staged_received, USV_MISSION_BAD_SEQ,
                          STAGE_ITEM);
         return;
     }
-    bad = item_problem(b, g, &it);
+    bad = item_problem(&it);
     if (bad != NULL) {
-        drop_staging(b);
-        send_mission_ack(b, msg, it.mission_id, 0, USV_MISSION_OUT_OF_RANGE, STAGE_ITEM);
+        send_mission_ack(b, msg, it.mission_id, it.seq, USV_MISSION_OUT_OF_RANGE, STAGE_ITEM);
         text_begin(&t, "item ");
         tx_uint(&t, it.seq);
         tx_str(&t, ": ");
         tx_str(&t, bad);
         tx_str(&t, " out of range");
-        send_text(b, MAV_SEVERITY_ERROR, &t);
+        send_text(b, MAV_SEVERITY_WARNING, &t);
         return;
     }
     g->lat[it.seq] = it.lat;
@@ -588,16 +575,13 @@ static void on_end(usv_boat_t *b, const mavlink_message_t *msg, uint32_t now)
 {
     mavlink_usv_mission_end_t e;
     usv_mission_t *g = staged_mission(b);
+    uint16_t i;
     text_t t;
     mavlink_msg_usv_mission_end_decode(msg, &e);
-    if (b->staging == USV_STAGING_VERIFIED && g->id == e.mission_id && g->crc32 == e.crc32) {
-        send_mission_ack(b, msg, e.mission_id, g->count, USV_MISSION_ACCEPTED, STAGE_END);
-        return;
-    }
-    if (b->staging != USV_STAGING_RECEIVING || g->id != e.mission_id) {
+    if (b->staging == USV_STAGING_NONE || g->id != e.mission_id) {
         if (active_is(b, e.mission_id) && active_mission(b)->crc32 == e.crc32) {
             send_mission_ack(b, msg, e.mission_id, active_mission(b)->count,
-                             USV_MISSION_ACCEPTED, STAGE_END);
+                             USV_MISSION_ACCEPTED, STAGE_END); /* a retry after activation */
         } else {
             send_mission_ack(b, msg, e.mission_id, 0,
                              e.mission_id == b->dropped_id ? USV_MISSION_EXPIRED
@@ -606,77 +590,94 @@ static void on_end(usv_boat_t *b, const mavlink_message_t *msg, uint32_t now)
         }
         return;
     }
-    if (e.count != g->count) {
-        send_mission_ack(b, msg, e.mission_id, b->staged_received, USV_MISSION_BAD_COUNT,
+    if (b->staging == USV_STAGING_VERIFIED) {
+        send_mission_ack(b, msg, e.mission_id, g->count, USV_MISSION_ACCEPTED, STAGE_END);
+        return;
+    }
+    if (e.count != g->count || e.crc32 != g->crc32) {
+        send_mission_ack(b, msg, e.mission_id, b->staged_received, USV_MISSION_CRC_MISMATCH,
                          STAGE_END);
         return;
     }
     if (b->staged_received < g->count) {
-        b->staging_touch_ms = now;
         send_mission_ack(b, msg, e.mission_id, b->staged_received, USV_MISSION_MISSING_ITEMS,
                          STAGE_END);
         return;
     }
-    if (e.crc32 != g->crc32 || usv_mission_crc32(g) != g->crc32) {
+    for (i = 1; i < g->count; i++) {
+        if (g->t_ms[i] <= g->t_ms[i - 1u]) {
+            drop_staging(b);
+            send_mission_ack(b, msg, e.mission_id, i, USV_MISSION_OUT_OF_RANGE, STAGE_END);
+            text_begin(&t, "item ");
+            tx_uint(&t, i);
+            tx_str(&t, ": t_ms not increasing");
+            send_text(b, MAV_SEVERITY_WARNING, &t);
+            return;
+        }
+    }
+    if (usv_mission_crc32(g) != g->crc32) {
         drop_staging(b);
         send_mission_ack(b, msg, e.mission_id, 0, USV_MISSION_CRC_MISMATCH, STAGE_END);
         text_begin(&t, "mission ");
         tx_uint(&t, e.mission_id);
         tx_str(&t, ": CRC-32 mismatch, dropped");
-        send_text(b, MAV_SEVERITY_ERROR, &t);
+        send_text(b, MAV_SEVERITY_WARNING, &t);
         return;
     }
-    if (b->staged_swap_at == 0u) {
-        if (!idle_like(b->state)) {
+    if (b->staged_swap_at != 0u) {
+        if (b->state != USV_BOAT_STATE_RUNNING || !at_or_after(b->staged_swap_at, now + 1u)) {
             drop_staging(b);
             send_mission_ack(b, msg, e.mission_id, 0, USV_MISSION_DENIED, STAGE_END);
+            text_begin(&t, "swap of ");
+            tx_uint(&t, e.mission_id);
+            tx_str(&t, " refused: instant passed or not running");
+            send_text(b, MAV_SEVERITY_WARNING, &t);
             return;
         }
-        b->active ^= 1u; /* atomic activation: the verified buffer becomes the active one */
-        b->has_active = 1;
-        b->staging = USV_STAGING_NONE;
-        b->staged_received = 0;
-        b->state = USV_BOAT_STATE_READY;
-        b->started = 0;
-        b->current_seq = 0;
-        hold_here(b);
-        send_mission_ack(b, msg, e.mission_id, active_mission(b)->count, USV_MISSION_ACCEPTED,
-                         STAGE_END);
+        b->staging = USV_STAGING_VERIFIED;
+        send_mission_ack(b, msg, e.mission_id, g->count, USV_MISSION_ACCEPTED, STAGE_END);
         return;
     }
-    if (b->state != USV_BOAT_STATE_RUNNING || !at_or_after(b->staged_swap_at, now + 1u)) {
+    if (!idle_like(b->state)) {
         drop_staging(b);
         send_mission_ack(b, msg, e.mission_id, 0, USV_MISSION_DENIED, STAGE_END);
-        text_begin(&t, "hot swap refused: ");
-        tx_str(&t, b->state != USV_BOAT_STATE_RUNNING ? "not RUNNING" : "swap_at_ms past");
-        send_text(b, MAV_SEVERITY_ERROR, &t);
         return;
     }
-    b->staging = USV_STAGING_VERIFIED;
-    send_mission_ack(b, msg, e.mission_id, g->count, USV_MISSION_ACCEPTED, STAGE_END);
+    b->active ^= 1u; /* atomic activation: the verified buffer becomes the active one */
+    b->has_active = 1;
+    b->staging = USV_STAGING_NONE;
+    b->staged_received = 0;
+    b->staged_swap_at = 0;
+    b->state = USV_BOAT_STATE_READY;
+    b->started = 0;
+    b->current_seq = 0;
+    hold_here(b);
+    send_mission_ack(b, msg, e.mission_id, active_mission(b)->count, USV_MISSION_ACCEPTED,
+                     STAGE_END);
+    text_begin(&t, "mission ");
+    tx_uint(&t, e.mission_id);
+    tx_str(&t, " active: ");
+    tx_uint(&t, active_mission(b)->count);
+    tx_str(&t, " waypoints");
+    send_text(b, MAV_SEVERITY_INFO, &t);
 }
 
 static void on_read(usv_boat_t *b, const mavlink_message_t *msg)
 {
     mavlink_usv_mission_read_t r;
     const usv_mission_t *m = NULL;
-    uint16_t have = 0;
     mavlink_msg_usv_mission_read_decode(msg, &r);
     if (active_is(b, r.mission_id)) {
         m = active_mission(b);
-        have = m->count;
     } else if (b->staging != USV_STAGING_NONE && staged_mission(b)->id == r.mission_id) {
         m = staged_mission(b);
-        have = m->count;
     }
     if (m == NULL) {
         send_mission_ack(b, msg, r.mission_id, 0, USV_MISSION_UNKNOWN_MISSION, STAGE_READ);
         return;
     }
-    if (r.seq >= have || (m != active_mission(b) && !staged_bit(b, r.seq))) {
-        send_mission_ack(b, msg, r.mission_id, m == active_mission(b) ? m->count
-                                                                      : b->staged_received,
-                         USV_MISSION_BAD_SEQ, STAGE_READ);
+    if (r.seq >= m->count || (m != active_mission(b) && !staged_bit(b, r.seq))) {
+        send_mission_ack(b, msg, r.mission_id, r.seq, USV_MISSION_BAD_SEQ, STAGE_READ);
         return;
     }
     {
@@ -698,25 +699,29 @@ static void on_read(usv_boat_t *b, const mavlink_message_t *msg)
 
 /* ------------------------------------------------------------------ commands */
 
-enum { WHY_NONE, WHY_STATE, WHY_MISMATCH, WHY_DISTANCE, WHY_NO_MISSION };
-
+/* Execute a recovery command; returns the MAV_RESULT and sets the USV_COMMAND_REASON. */
 static uint8_t do_command(usv_boat_t *b, uint16_t cmd, const mavlink_command_int_t *c,
-                          uint32_t now, int *why, float *distance)
+                          uint32_t now, uint8_t *reason, float *distance)
 {
     usv_mission_t *a = active_mission(b);
+    *reason = USV_COMMAND_REASON_NONE;
     switch (cmd) {
     case MAV_CMD_USV_START:
-        if (b->state != USV_BOAT_STATE_READY || !b->has_active) {
-            *why = WHY_STATE;
+        if (!b->has_active) {
+            *reason = USV_COMMAND_REASON_NO_MISSION;
             return MAV_RESULT_DENIED;
         }
         if ((uint32_t)c->x != a->id || (uint32_t)c->y != a->crc32) {
-            *why = WHY_MISMATCH;
+            *reason = USV_COMMAND_REASON_MISSION_MISMATCH;
+            return MAV_RESULT_DENIED;
+        }
+        if (b->state != USV_BOAT_STATE_READY) {
+            *reason = USV_COMMAND_REASON_WRONG_STATE;
             return MAV_RESULT_DENIED;
         }
         *distance = dist_to(b, a->lat[0], a->lon[0]);
         if (*distance > b->cfg.start_radius_m) {
-            *why = WHY_DISTANCE;
+            *reason = USV_COMMAND_REASON_TOO_FAR;
             return MAV_RESULT_DENIED;
         }
         b->state = USV_BOAT_STATE_RUNNING;
@@ -724,30 +729,30 @@ static uint8_t do_command(usv_boat_t *b, uint16_t cmd, const mavlink_command_int
         b->t0_ms = now;
         b->current_seq = 0;
         return MAV_RESULT_ACCEPTED;
-    case MAV_CMD_USV_HOLD:
+    case MAV_CMD_USV_HOLD: /* always acts: whatever moves stops and keeps station */
         if (b->state == USV_BOAT_STATE_RUNNING) {
             b->hold_since_ms = now;
             hold_here(b);
-            b->state = USV_BOAT_STATE_HOLD;
-        } else if (b->state == USV_BOAT_STATE_READY || b->state == USV_BOAT_STATE_FAILSAFE) {
-            b->state = USV_BOAT_STATE_HOLD; /* keeps the station point it had */
         }
-        b->guidance_on = 0;
-        return MAV_RESULT_ACCEPTED; /* IDLE, DONE, ABORTED: already stopped */
+        if (b->state == USV_BOAT_STATE_RUNNING || b->state == USV_BOAT_STATE_FAILSAFE ||
+            b->state == USV_BOAT_STATE_HOLD) {
+            b->state = USV_BOAT_STATE_HOLD;
+            b->guidance_on = 0;
+        }
+        return MAV_RESULT_ACCEPTED; /* IDLE, READY, DONE, ABORTED: nothing moves */
     case MAV_CMD_USV_RESUME:
+        if (b->state == USV_BOAT_STATE_RUNNING) {
+            return MAV_RESULT_ACCEPTED;
+        }
         if ((b->state != USV_BOAT_STATE_HOLD && b->state != USV_BOAT_STATE_FAILSAFE) ||
             !b->has_active) {
-            *why = b->has_active ? WHY_STATE : WHY_NO_MISSION;
+            *reason = USV_COMMAND_REASON_WRONG_STATE;
             return MAV_RESULT_DENIED;
         }
-        if (b->started) {
-            b->t0_ms += now - b->hold_since_ms; /* the schedule shifted by the time held */
-            b->state = USV_BOAT_STATE_RUNNING;
-        } else {
-            b->state = USV_BOAT_STATE_READY;
-        }
+        b->t0_ms += now - b->hold_since_ms; /* the schedule shifted by the time held */
+        b->state = USV_BOAT_STATE_RUNNING;
         return MAV_RESULT_ACCEPTED;
-    case MAV_CMD_USV_ABORT:
+    case MAV_CMD_USV_ABORT: /* always acts: propellers stop, missions and staging dropped */
         drop_staging(b);
         b->has_active = 0;
         b->started = 0;
@@ -756,17 +761,19 @@ static uint8_t do_command(usv_boat_t *b, uint16_t cmd, const mavlink_command_int
         b->state = USV_BOAT_STATE_ABORTED;
         return MAV_RESULT_ACCEPTED;
     default:
+        *reason = USV_COMMAND_REASON_UNKNOWN_COMMAND;
         return MAV_RESULT_UNSUPPORTED;
     }
 }
 
 static void send_command_ack(usv_boat_t *b, const mavlink_message_t *req, uint16_t cmd,
-                             uint8_t result, int32_t seq)
+                             uint8_t result, uint8_t reason, int32_t seq)
 {
     mavlink_command_ack_t a;
     memset(&a, 0, sizeof a);
     a.command = cmd;
     a.result = result;
+    a.progress = reason; /* USV_COMMAND_REASON */
     a.result_param2 = seq;
     a.target_system = req->sysid;
     a.target_component = req->compid;
@@ -788,19 +795,20 @@ static void on_command_int(usv_boat_t *b, const mavlink_message_t *msg, uint32_t
     uint32_t seq, session;
     usv_dup_t *d = NULL, *slot = NULL;
     unsigned i;
-    int why = WHY_NONE;
+    uint8_t reason = USV_COMMAND_REASON_NONE;
     float distance = 0.0f;
     uint8_t result;
     text_t t;
     mavlink_msg_command_int_decode(msg, &c);
     if (c.command < MAV_CMD_USV_START || c.command > MAV_CMD_USV_ABORT) {
-        send_command_ack(b, msg, c.command, MAV_RESULT_UNSUPPORTED, 0);
+        send_command_ack(b, msg, c.command, MAV_RESULT_UNSUPPORTED,
+                         USV_COMMAND_REASON_UNKNOWN_COMMAND, 0);
         return;
     }
-    if (!as_counter(c.param1, &seq) || !as_counter(c.param2, &session) || session == 0u) {
-        send_command_ack(b, msg, c.command, MAV_RESULT_DENIED, 0);
-        text_begin(&t, "command refused: param1 seq / param2 session invalid");
-        send_text(b, MAV_SEVERITY_ERROR, &t);
+    if (!as_counter(c.param1, &seq) || !as_counter(c.param2, &session)) {
+        send_command_ack(b, msg, c.command, MAV_RESULT_DENIED, USV_COMMAND_REASON_NONE, 0);
+        text_begin(&t, "command refused: param1/param2 not integers below 2^24");
+        send_text(b, MAV_SEVERITY_WARNING, &t);
         return;
     }
     if (session != b->station_session) { /* a new station session: forget the old one */
@@ -809,24 +817,22 @@ static void on_command_int(usv_boat_t *b, const mavlink_message_t *msg, uint32_t
     }
     for (i = 0; i < USV_DUP_SLOTS; i++) {
         usv_dup_t *e = &b->dup[i];
-        if (e->used && !at_or_after(now, e->at_ms + USV_DUP_EXPIRY_MS)) {
-            if (e->session == session && e->seq == seq && e->command == c.command) {
-                d = e;
-            }
-        } else {
-            e->used = 0;
+        if (e->used && at_or_after(now, e->at_ms + b->cfg.dup_expiry_ms)) {
+            e->used = 0; /* expired */
         }
-        if (slot == NULL || !e->used || (slot->used && at_or_after(slot->at_ms, e->at_ms))) {
-            if (slot == NULL || slot->used) {
-                slot = e;
-            }
+        if (e->used && e->session == session && e->seq == seq && e->command == c.command) {
+            d = e;
+        }
+        if (slot == NULL || (slot->used && (!e->used || at_or_after(slot->at_ms, e->at_ms)))) {
+            slot = e; /* a free slot, else the oldest */
         }
     }
     if (d != NULL && c.command != MAV_CMD_USV_HOLD && c.command != MAV_CMD_USV_ABORT) {
-        send_command_ack(b, msg, c.command, d->result, (int32_t)seq); /* answered, not redone */
+        /* a retry: the same answer, not executed again */
+        send_command_ack(b, msg, c.command, d->result, d->reason, (int32_t)seq);
         return;
     }
-    result = do_command(b, c.command, &c, now, &why, &distance);
+    result = do_command(b, c.command, &c, now, &reason, &distance);
     if (d == NULL) {
         d = slot;
         d->used = 1;
@@ -835,23 +841,20 @@ static void on_command_int(usv_boat_t *b, const mavlink_message_t *msg, uint32_t
         d->command = c.command;
     }
     d->result = result;
+    d->reason = reason;
     d->at_ms = now;
-    send_command_ack(b, msg, c.command, result, (int32_t)seq); /* the ACK first */
-    if (why != WHY_NONE) {
-        text_begin(&t, c.command == MAV_CMD_USV_START ? "START refused: " : "RESUME refused: ");
-        if (why == WHY_DISTANCE) {
-            tx_metres(&t, distance);
-            tx_str(&t, " from waypoint 0 (limit ");
-            tx_metres(&t, b->cfg.start_radius_m);
-            tx_str(&t, ")");
-        } else if (why == WHY_MISMATCH) {
-            tx_str(&t, "mission id/CRC differ from the held mission");
-        } else if (why == WHY_NO_MISSION) {
-            tx_str(&t, "no active mission");
-        } else {
-            tx_str(&t, c.command == MAV_CMD_USV_START ? "not READY" : "not in HOLD or FAILSAFE");
-        }
-        send_text(b, MAV_SEVERITY_ERROR, &t);
+    send_command_ack(b, msg, c.command, result, reason, (int32_t)seq); /* the ACK first */
+    if (reason == USV_COMMAND_REASON_TOO_FAR) {
+        text_begin(&t, "START refused: ");
+        tx_metres(&t, distance);
+        tx_str(&t, " from waypoint 0 (limit ");
+        tx_metres(&t, b->cfg.start_radius_m);
+        tx_str(&t, ")");
+        send_text(b, MAV_SEVERITY_WARNING, &t);
+    } else if (reason == USV_COMMAND_REASON_MISSION_MISMATCH) {
+        text_begin(&t, "START refused: holds mission ");
+        tx_uint(&t, active_mission(b)->id);
+        send_text(b, MAV_SEVERITY_WARNING, &t);
     }
 }
 
@@ -899,22 +902,35 @@ static int is_control(uint32_t msgid)
     }
 }
 
+static int has_target(uint32_t msgid)
+{
+    return is_control(msgid) || msgid == MAVLINK_MSG_ID_USV_RAMP_POSE;
+}
+
 static void on_frame(usv_boat_t *b, const mavlink_message_t *msg, uint32_t now)
 {
-    int from_station = msg->sysid == b->cfg.station_id;
-    if (from_station) {
-        b->last_station_ms = now; /* only the paired station's valid frames refresh the timer */
-        b->station_heard = 1;
+    text_t t;
+    if (msg->sysid == b->cfg.boat_id) {
+        return; /* our own frames heard back: never the station */
     }
-    if (is_control(msg->msgid)) {
-        if (!from_station) {
+    if (msg->sysid != b->cfg.station_id) {
+        if (is_control(msg->msgid)) {
             refuse(b, USV_REFUSE_SENDER);
-            return;
         }
-        if (target_of(msg) != b->cfg.boat_id) {
-            refuse(b, USV_REFUSE_TARGET);
-            return;
-        }
+        return; /* other systems on the channel: never obeyed, never refresh the link */
+    }
+    if (msg->msgid == MAVLINK_MSG_ID_RADIO_STATUS) {
+        return; /* the radio's unsigned report: not the station speaking */
+    }
+    if (has_target(msg->msgid) && target_of(msg) != b->cfg.boat_id) {
+        return; /* for another boat */
+    }
+    b->last_station_ms = now; /* only the paired station's valid frames refresh the timer */
+    if (!b->station_heard) {
+        b->station_heard = 1;
+        text_begin(&t, b->state == USV_BOAT_STATE_FAILSAFE
+                           ? "link back; failsafe hold: RESUME or ABORT" : "link up");
+        send_text(b, MAV_SEVERITY_INFO, &t);
     }
     switch (msg->msgid) {
     case MAVLINK_MSG_ID_COMMAND_INT:
@@ -922,7 +938,7 @@ static void on_frame(usv_boat_t *b, const mavlink_message_t *msg, uint32_t now)
         break;
     case MAVLINK_MSG_ID_COMMAND_LONG:
         send_command_ack(b, msg, mavlink_msg_command_long_get_command(msg),
-                         MAV_RESULT_UNSUPPORTED, 0);
+                         MAV_RESULT_UNSUPPORTED, USV_COMMAND_REASON_UNKNOWN_COMMAND, 0);
         break;
     case MAVLINK_MSG_ID_USV_MISSION_BEGIN:
         on_begin(b, msg, now);
@@ -954,9 +970,9 @@ static void on_frame(usv_boat_t *b, const mavlink_message_t *msg, uint32_t now)
         }
         break;
     case MAVLINK_MSG_ID_TIMESYNC:
-        if (from_station && mavlink_msg_timesync_get_tc1(msg) == 0) {
+        if (mavlink_msg_timesync_get_tc1(msg) == 0) {
             mavlink_timesync_t ts;
-            ts.tc1 = (int64_t)uptime(b) * 1000000;
+            ts.tc1 = (int64_t)uptime(b) * 1000000 + 1; /* never 0 (that is a request) */
             ts.ts1 = mavlink_msg_timesync_get_ts1(msg);
             SEND(timesync, &ts);
         }
@@ -1098,23 +1114,27 @@ static void tick(usv_boat_t *b, uint32_t now)
 {
     text_t t;
     /* failsafe: no valid frame from the paired station for the link timeout */
-    if ((b->state == USV_BOAT_STATE_RUNNING || b->state == USV_BOAT_STATE_READY ||
-         b->state == USV_BOAT_STATE_HOLD) &&
-        at_or_after(now, b->last_station_ms + b->cfg.link_timeout_ms)) {
-        if (b->state == USV_BOAT_STATE_RUNNING) {
-            b->hold_since_ms = now;
-            hold_here(b);
+    if (b->station_heard && at_or_after(now, b->last_station_ms + b->cfg.link_timeout_ms)) {
+        b->station_heard = 0;
+        if (b->state == USV_BOAT_STATE_RUNNING || b->state == USV_BOAT_STATE_HOLD) {
+            if (b->state == USV_BOAT_STATE_RUNNING) {
+                b->hold_since_ms = now;
+                hold_here(b);
+            }
+            b->state = USV_BOAT_STATE_FAILSAFE;
+            b->guidance_on = 0;
+            text_begin(&t, "failsafe: no station for ");
+            tx_uint(&t, b->cfg.link_timeout_ms);
+            tx_str(&t, " ms, keeping station");
+            send_text(b, MAV_SEVERITY_CRITICAL, &t);
+        } else {
+            text_begin(&t, "link lost");
+            send_text(b, MAV_SEVERITY_WARNING, &t);
         }
-        b->state = USV_BOAT_STATE_FAILSAFE;
-        b->guidance_on = 0;
-        text_begin(&t, "failsafe: no station frame for ");
-        tx_uint(&t, b->cfg.link_timeout_ms);
-        tx_str(&t, " ms, keeping station");
-        send_text(b, MAV_SEVERITY_CRITICAL, &t);
     }
     /* staging expiry */
     if (b->staging == USV_STAGING_RECEIVING &&
-        at_or_after(now, b->staging_touch_ms + USV_STAGING_EXPIRY_MS)) {
+        at_or_after(now, b->staging_touch_ms + b->cfg.staging_expiry_ms)) {
         text_begin(&t, "staging of mission ");
         tx_uint(&t, staged_mission(b)->id);
         tx_str(&t, " expired");
@@ -1124,8 +1144,7 @@ static void tick(usv_boat_t *b, uint32_t now)
     /* hot swap at the instant on the boat clock */
     if (b->staging == USV_STAGING_VERIFIED && at_or_after(now, b->staged_swap_at)) {
         uint32_t at = b->staged_swap_at;
-        if (b->state == USV_BOAT_STATE_RUNNING || b->state == USV_BOAT_STATE_HOLD ||
-            b->state == USV_BOAT_STATE_FAILSAFE) {
+        if (b->state == USV_BOAT_STATE_RUNNING) {
             b->active ^= 1u;
             b->staging = USV_STAGING_NONE;
             b->staged_received = 0;
@@ -1133,17 +1152,16 @@ static void tick(usv_boat_t *b, uint32_t now)
             b->t0_ms = at; /* item times count from the swap instant */
             b->current_seq = 0;
             b->guidance_on = 0;
-            if (b->state != USV_BOAT_STATE_RUNNING && !at_or_after(b->hold_since_ms, at)) {
-                b->hold_since_ms = at;
-            }
-            text_begin(&t, "hot swap: mission ");
+            text_begin(&t, "swapped to mission ");
             tx_uint(&t, active_mission(b)->id);
-            tx_str(&t, " active");
+            tx_str(&t, " at ");
+            tx_uint(&t, at);
+            tx_str(&t, " ms");
             send_text(b, MAV_SEVERITY_INFO, &t);
         } else {
-            text_begin(&t, "hot swap of mission ");
+            text_begin(&t, "swap to ");
             tx_uint(&t, staged_mission(b)->id);
-            tx_str(&t, " dropped: not under way");
+            tx_str(&t, " dropped: not running at the instant");
             drop_staging(b);
             send_text(b, MAV_SEVERITY_WARNING, &t);
         }
@@ -1177,6 +1195,12 @@ int usv_boat_init(usv_boat_t *b, const usv_config_t *cfg, const usv_hal_t *hal)
     }
     memset(b, 0, sizeof *b);
     b->cfg = *cfg;
+    if (b->cfg.dup_expiry_ms == 0u) {
+        b->cfg.dup_expiry_ms = USV_DUP_EXPIRY_MS;
+    }
+    if (b->cfg.staging_expiry_ms == 0u) {
+        b->cfg.staging_expiry_ms = USV_STAGING_EXPIRY_MS;
+    }
     b->hal = *hal;
     b->boot_ms = hal->now_ms(hal->ctx);
     b->state = USV_BOAT_STATE_IDLE;

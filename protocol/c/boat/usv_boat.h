@@ -26,8 +26,8 @@
 #define USV_RX_RING 512 /* receive ring buffer, bytes; a power of two */
 #endif
 #define USV_DUP_SLOTS 8              /* remembered commands */
-#define USV_DUP_EXPIRY_MS 5000u      /* duplicate memory expiry */
-#define USV_STAGING_EXPIRY_MS 30000u /* staging expiry without progress */
+#define USV_DUP_EXPIRY_MS 5000u      /* default duplicate memory expiry */
+#define USV_STAGING_EXPIRY_MS 30000u /* default staging expiry without progress */
 #define USV_HEARTBEAT_MS 1000u       /* HEARTBEAT + USV_MISSION_STATE period */
 #define USV_TEXT_MIN_MS 1000u        /* at most one refusal STATUSTEXT per second */
 
@@ -62,6 +62,8 @@ typedef struct {
     uint32_t boot_id;     /* random per boot, reported in USV_MISSION_STATE */
     uint32_t telemetry_period_ms; /* GLOBAL_POSITION_INT, ATTITUDE, VFR_HUD, USV_THRUST */
     uint32_t link_timeout_ms;     /* failsafe after this long without a station frame */
+    uint32_t dup_expiry_ms;       /* duplicate memory expiry (0: 5000) */
+    uint32_t staging_expiry_ms;   /* staging dropped without progress (0: 30000) */
     float start_radius_m;         /* START refused farther from waypoint 0 */
     float max_speed_mps;          /* the hull's top speed at full thrust */
 } usv_config_t;
@@ -88,11 +90,12 @@ typedef struct {
     uint32_t at_ms;
     uint16_t command;
     uint8_t result;
+    uint8_t reason;
     uint8_t used;
 } usv_dup_t;
 
 enum { USV_REFUSE_UNSIGNED, USV_REFUSE_BAD_SIGNATURE, USV_REFUSE_REPLAY, USV_REFUSE_SENDER,
-       USV_REFUSE_TARGET, USV_REFUSE_KINDS };
+       USV_REFUSE_KINDS };
 
 typedef struct {
     usv_config_t cfg;
@@ -131,7 +134,7 @@ typedef struct {
     int32_t hold_lat, hold_lon;
     uint32_t boot_ms;
     uint32_t last_station_ms;
-    uint8_t station_heard;
+    uint8_t station_heard; /* linked: a valid frame of the station since boot or link loss */
     uint32_t station_session;
     usv_dup_t dup[USV_DUP_SLOTS];
     uint32_t guidance_until_ms;
