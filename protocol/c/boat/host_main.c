@@ -2,18 +2,22 @@
  * usv_boat_host: the C boat on a pty/serial device or a TCP port, with a kinematic
  * vehicle that the boat's thrust commands drive (POSIX host build).
  *
- *   usv_boat_host DEVICE|PORT (--link-key PATH | --insecure-link) [--boat-id N]
+ *   usv_boat_host DEVICE|PORT|pty (--link-key PATH | --insecure-link) [--boat-id N]
  *       [--station-id N] [--speedup X] [--lat DEG --lon DEG --heading-deg DEG]
  *       [--telemetry-hz HZ] [--start-radius M] [--link-timeout-s S] [--duration S]
+ *       [--nv-file PATH]
  *
  * A PORT (digits) listens on 127.0.0.1:PORT (0: any free port) for one client at a time,
- * e.g. `usv-station serve --link socket://127.0.0.1:PORT`; anything else is opened as a
- * serial device or pty slave (raw). The boat clock runs --speedup times the wall clock;
+ * e.g. `usv-station serve --link socket://127.0.0.1:PORT`; `pty` creates a pseudo-terminal
+ * and prints its device (the station opens it); anything else is opened as a serial
+ * device or pty slave (raw). --nv-file is the boat's non-volatile memory: the signing
+ * floor (the newest signing timestamp seen), written every second and read at boot, so a
+ * frame recorded before a reboot is refused after it even without a clock. The boat clock runs --speedup times the wall clock;
  * the link timeouts (failsafe, duplicate memory, staging expiry) stay in wall time.
  * The "UART interrupt" is the read() of the main loop: bytes go to usv_boat_rx_byte(),
  * usv_boat_poll() parses them afterwards, as on the microcontroller.
  */
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 600
 #define _DEFAULT_SOURCE
 
 #include <errno.h>
@@ -223,6 +227,57 @@ static int listen_port(int port, int *bound)
     return fd;
 }
 
+/* the non-volatile memory: one line "sign_floor N" */
+static uint64_t nv_read(const char *path)
+{
+    unsigned long long v = 0;
+    FILE *f = path != NULL ? fopen(path, "r") : NULL;
+    if (f != NULL) {
+        if (fscanf(f, "sign_floor %llu", &v) != 1) {
+            v = 0;
+        }
+        fclose(f);
+    }
+    return (uint64_t)v;
+}
+
+static void nv_write(const char *path, uint64_t floor)
+{
+    char tmp[4096];
+    FILE *f;
+    if (path == NULL || strlen(path) + 5 >= sizeof tmp) {
+        return;
+    }
+    snprintf(tmp, sizeof tmp, "%s.tmp", path);
+    f = fopen(tmp, "w");
+    if (f == NULL) {
+        return;
+    }
+    fprintf(f, "sign_floor %llu\n", (unsigned long long)floor);
+    if (fclose(f) == 0) {
+        rename(tmp, path); /* atomic: a crash leaves the old floor, never a torn one */
+    }
+}
+
+static int open_pty(char *name, size_t len, int *slave)
+{
+    struct termios tio;
+    const char *sn;
+    int fd = posix_openpt(O_RDWR | O_NOCTTY);
+    if (fd < 0 || grantpt(fd) != 0 || unlockpt(fd) != 0 || (sn = ptsname(fd)) == NULL) {
+        perror("usv_boat_host: pty");
+        return -1;
+    }
+    snprintf(name, len, "%s", sn);
+    *slave = open(name, O_RDWR | O_NOCTTY); /* kept open: the master never sees a hangup */
+    if (*slave >= 0 && tcgetattr(*slave, &tio) == 0) {
+        cfmakeraw(&tio);
+        tcsetattr(*slave, TCSANOW, &tio);
+    }
+    fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK);
+    return fd;
+}
+
 static int is_port(const char *s)
 {
     if (*s == '\0') {
@@ -238,10 +293,11 @@ static int is_port(const char *s)
 
 static int usage(const char *why)
 {
-    fprintf(stderr, "usv_boat_host: %s\nusage: usv_boat_host DEVICE|PORT (--link-key PATH | "
+    fprintf(stderr, "usv_boat_host: %s\nusage: usv_boat_host DEVICE|PORT|pty (--link-key PATH | "
                     "--insecure-link) [--boat-id N] [--station-id N] [--speedup X] [--lat DEG] "
                     "[--lon DEG] [--heading-deg DEG] [--telemetry-hz HZ] [--start-radius M] "
-                    "[--link-timeout-s S] [--duration S]\n", why);
+                    "[--link-timeout-s S] [--staging-expiry-s S] [--duration S] "
+                    "[--nv-file PATH]\n", why);
     return 2;
 }
 
@@ -280,10 +336,14 @@ int main(int argc, char **argv)
     usv_config_t cfg;
     usv_hal_t hal;
     uint8_t key[32];
-    const char *where = NULL, *key_path = NULL;
+    const char *where = NULL, *key_path = NULL, *nv_path = NULL;
+    char pty_name[256];
+    int pty_slave = -1;
+    uint64_t floor_saved = 0;
+    double next_nv = 1.0;
     int insecure = 0, listen_fd = -1, port = -1, bound = 0, i;
     double boat_id = 1, station_id = 255, speedup = 1, lat = 59.9, lon = 10.7, heading = 0;
-    double tel_hz = 5, radius = 10, timeout_s = 3, duration = 0;
+    double tel_hz = 5, radius = 10, timeout_s = 3, duration = 0, staging_s = 30;
     double last_t, sim_t;
     struct timeval tv;
 
@@ -311,6 +371,9 @@ int main(int argc, char **argv)
         if (strcmp(a, "--link-key") == 0) {
             key_path = v;
             continue;
+        } else if (strcmp(a, "--nv-file") == 0) {
+            nv_path = v;
+            continue;
         } else if (strcmp(a, "--boat-id") == 0) {
             num = &boat_id, lo = 1, hi = 255;
         } else if (strcmp(a, "--station-id") == 0) {
@@ -329,6 +392,8 @@ int main(int argc, char **argv)
             num = &radius, lo = 0.1, hi = 100000;
         } else if (strcmp(a, "--link-timeout-s") == 0) {
             num = &timeout_s, lo = 0.1, hi = 3600;
+        } else if (strcmp(a, "--staging-expiry-s") == 0) {
+            num = &staging_s, lo = 0.1, hi = 3600;
         } else if (strcmp(a, "--duration") == 0) {
             num = &duration, lo = 0, hi = 1e9;
         } else {
@@ -361,12 +426,16 @@ int main(int argc, char **argv)
     gettimeofday(&tv, NULL); /* signing time: 10 us units since 2015-01-01 00:00:00 UTC */
     cfg.boot_timestamp = ((uint64_t)tv.tv_sec - 1420070400u) * 100000u +
                          (uint64_t)tv.tv_usec / 10u;
+    floor_saved = nv_read(nv_path);
+    if (floor_saved >= cfg.boot_timestamp) {
+        cfg.boot_timestamp = floor_saved + 1u; /* never accept what was seen before boot */
+    }
     cfg.boot_id = random_u32();
     cfg.telemetry_period_ms = (uint32_t)(1000.0 / tel_hz + 0.5);
     /* the link timeouts count link (wall) time, the boat clock runs --speedup faster */
     cfg.link_timeout_ms = (uint32_t)(timeout_s * 1000.0 * speedup + 0.5);
     cfg.dup_expiry_ms = (uint32_t)(USV_DUP_EXPIRY_MS * speedup + 0.5);
-    cfg.staging_expiry_ms = (uint32_t)(USV_STAGING_EXPIRY_MS * speedup + 0.5);
+    cfg.staging_expiry_ms = (uint32_t)(staging_s * 1000.0 * speedup + 0.5);
     cfg.start_radius_m = (float)radius;
     cfg.max_speed_mps = 4.0f;
 
@@ -400,6 +469,14 @@ int main(int argc, char **argv)
         printf("usv_boat_host: boat %d (station %d) listening on 127.0.0.1:%d, %s, speedup %g\n",
                (int)boat_id, (int)station_id, bound, insecure ? "INSECURE unsigned link"
                                                               : "signed link", speedup);
+    } else if (strcmp(where, "pty") == 0) {
+        host.fd = open_pty(pty_name, sizeof pty_name, &pty_slave);
+        if (host.fd < 0) {
+            return 1;
+        }
+        printf("usv_boat_host: boat %d (station %d) on %s, %s, speedup %g\n", (int)boat_id,
+               (int)station_id, pty_name, insecure ? "INSECURE unsigned link" : "signed link",
+               speedup);
     } else {
         host.fd = open_device(where);
         if (host.fd < 0) {
@@ -458,6 +535,8 @@ int main(int argc, char **argv)
                         host.fd = -1;
                         printf("usv_boat_host: station disconnected\n");
                         fflush(stdout);
+                    } else if (pty_slave >= 0) {
+                        usleep(20000); /* the station closed its side; wait for it */
                     } else if (n == 0 || errno != EIO) {
                         stop_flag = 1; /* the device went away */
                     } else {
@@ -483,13 +562,27 @@ int main(int argc, char **argv)
         }
         usv_boat_poll(&boat);
         last_t = now;
+        if (nv_path != NULL && now >= next_nv) {
+            uint64_t floor = usv_boat_signing_floor(&boat);
+            next_nv = now + 1.0;
+            if (floor > floor_saved) {
+                nv_write(nv_path, floor);
+                floor_saved = floor;
+            }
+        }
         if (duration > 0 && now >= duration) {
             break;
         }
     }
     (void)last_t;
+    if (nv_path != NULL && usv_boat_signing_floor(&boat) > floor_saved) {
+        nv_write(nv_path, usv_boat_signing_floor(&boat));
+    }
     if (host.fd >= 0) {
         close(host.fd);
+    }
+    if (pty_slave >= 0) {
+        close(pty_slave);
     }
     if (listen_fd >= 0) {
         close(listen_fd);

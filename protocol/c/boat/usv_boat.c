@@ -1237,6 +1237,11 @@ void usv_boat_rx_byte(usv_boat_t *b, uint8_t byte)
     b->rx_head = next;
 }
 
+uint64_t usv_boat_signing_floor(const usv_boat_t *b)
+{
+    return b->signing.timestamp;
+}
+
 void usv_boat_set_nav(usv_boat_t *b, const usv_nav_t *nav)
 {
     b->nav = *nav;

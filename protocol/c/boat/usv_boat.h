@@ -173,6 +173,10 @@ void usv_boat_set_nav(usv_boat_t *b, const usv_nav_t *nav);
 /* Main loop: parse received bytes, act, send replies first, then due telemetry. */
 void usv_boat_poll(usv_boat_t *b);
 
+/* The newest signing timestamp sent or accepted: persist it (non-volatile memory) and pass
+ * it back as boot_timestamp after a reboot, so that recorded frames stay refused. */
+uint64_t usv_boat_signing_floor(const usv_boat_t *b);
+
 /* CRC-32 (IEEE 802.3, reflected, as zlib.crc32) continuing from `crc`. */
 uint32_t usv_crc32(uint32_t crc, const uint8_t *data, uint32_t len);
 /* The mission CRC-32 over items 0..count-1 (USV_MISSION_BEGIN.crc32). */
