@@ -10,13 +10,11 @@ the wall clock of this machine.
 from __future__ import annotations
 
 import contextlib
-import importlib.util
 import os
 import re
 import shutil
 import socket
 import subprocess
-import sys
 import threading
 import time
 import zlib
@@ -27,7 +25,6 @@ from typing import Any
 
 ROOT = Path(__file__).resolve().parents[2]
 BOAT_DIR = ROOT / "protocol" / "c" / "boat"
-DIALECT_XML = ROOT / "protocol" / "usv_recovery.xml"
 SIGNING_EPOCH = 1420070400  # MAVLink signing timestamps: 10 us units since 2015-01-01
 STATION_ID = 255
 STATION_COMP = 190
@@ -51,28 +48,11 @@ def build_c_boat(build_dir: Path, target: str = "all") -> Path:
     return build_dir / name
 
 
-def load_dialect(cache_dir: Path) -> Any:
-    """pymavlink's generated Python codec of protocol/usv_recovery.xml (mavgen into cache)."""
-    import pymavlink
-    from pymavlink.generator import mavgen
+def load_dialect() -> Any:
+    """pymavlink's generated Python codec of protocol/usv_recovery.xml (the project's copy)."""
+    from usvstation.link.mavlink import usv_recovery
 
-    out = cache_dir / "usv_recovery_py.py"
-    if not out.exists():
-        src = cache_dir / "xml"
-        src.mkdir(parents=True, exist_ok=True)
-        v20 = Path(pymavlink.__file__).parent / "dialects" / "v20"
-        for name in ("common.xml", "standard.xml", "minimal.xml"):
-            shutil.copy(v20 / name, src / name)
-        shutil.copy(DIALECT_XML, src / "usv_recovery.xml")
-        opts = mavgen.Opts(str(out), wire_protocol="2.0", language="Python3",
-                           validate=False)
-        mavgen.mavgen(opts, [str(src / "usv_recovery.xml")])
-    spec = importlib.util.spec_from_file_location("usv_recovery_py", out)
-    assert spec is not None and spec.loader is not None
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules["usv_recovery_py"] = mod
-    spec.loader.exec_module(mod)
-    return mod
+    return usv_recovery
 
 
 def signing_now() -> int:
@@ -119,11 +99,13 @@ class CBoat:
 
     @classmethod
     def start(cls, exe: Path, *, key: Path | None, where: str = "0", boat_id: int = BOAT_ID,
-              station_id: int = STATION_ID, speedup: float = 1.0,
+              station_id: int = STATION_ID, speedup: float = 1.0, nv: Path | None = None,
               extra: tuple[str, ...] = ()) -> CBoat:
         args = [str(exe), where, "--boat-id", str(boat_id), "--station-id", str(station_id),
                 "--speedup", str(speedup), "--lat", str(START_LAT), "--lon", str(START_LON),
                 *extra]
+        if nv is not None:
+            args += ["--nv-file", str(nv)]
         args += ["--link-key", str(key)] if key is not None else ["--insecure-link"]
         proc = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                 text=True)

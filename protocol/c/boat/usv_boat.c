@@ -847,9 +847,8 @@ static void on_command_int(usv_boat_t *b, const mavlink_message_t *msg, uint32_t
     if (reason == USV_COMMAND_REASON_TOO_FAR) {
         text_begin(&t, "START refused: ");
         tx_metres(&t, distance);
-        tx_str(&t, " from waypoint 0 (limit ");
+        tx_str(&t, " from waypoint 0 > "); /* fits the 50 characters up to 99999.9 m */
         tx_metres(&t, b->cfg.start_radius_m);
-        tx_str(&t, ")");
         send_text(b, MAV_SEVERITY_WARNING, &t);
     } else if (reason == USV_COMMAND_REASON_MISSION_MISMATCH) {
         text_begin(&t, "START refused: holds mission ");
