@@ -84,6 +84,14 @@ def build_parser() -> argparse.ArgumentParser:
     serve.add_argument("--viser-port", type=int, help="3D view port (default 8080)")
     serve.add_argument("--sim-speed", type=float,
                        help="simulated boat time runs this many times faster (default 1)")
+    # usv-link 2 (issue 11): pairing and signing
+    serve.add_argument("--boat-id", type=int,
+                       help="MAVLink system id of the paired boat (default 1; station is 255)")
+    serve.add_argument("--link-key", type=Path, metavar="PATH",
+                       help="32-byte signing key file (usv-station link-key new PATH); with the "
+                       "simulated boat default: generated into the data dir")
+    serve.add_argument("--insecure-link", action="store_true", default=None,
+                       help="unsigned link (anyone with a radio can command the boat)")
 
     sim = sub.add_parser(
         "sim", help="run the simulated boat on a serial port",
@@ -113,6 +121,21 @@ def build_parser() -> argparse.ArgumentParser:
                      help="waves of this sea state running with the scenario's wind (default 0)")
     sim.add_argument("--duration", type=float, default=None,
                      help="stop after this many seconds (default: run until interrupted)")
+    sim.add_argument("--boat-id", type=int, default=1, help="boat system id (default 1)")
+    sim.add_argument("--station-id", type=int, default=255,
+                     help="system id of the paired station (default 255)")
+    sim.add_argument("--link-key", type=Path, metavar="PATH",
+                     help="signing key file shared with the station")
+    sim.add_argument("--insecure-link", action="store_true",
+                     help="accept unsigned frames (only without --link-key)")
+    sim.add_argument("--nv-file", type=Path, metavar="PATH",
+                     help="the boat's non-volatile memory (signing replay floor) across "
+                     "restarts, like the STM32's flash")
+
+    link_key = sub.add_parser("link-key", help="manage usv-link signing keys")
+    link_key_sub = link_key.add_subparsers(dest="key_command", required=True)
+    key_new = link_key_sub.add_parser("new", help="write a new random 32-byte key (mode 0600)")
+    key_new.add_argument("path", type=Path, help="key file to create (must not exist)")
 
     bench = sub.add_parser("bench", help="run a benchmark and print its figures")
     bench.add_argument("name", choices=["planner", "tracking", "link", "server"],
@@ -141,6 +164,8 @@ def main(argv: list[str] | None = None) -> int:
             return _cmd_bench(args)
         if args.command == "sim":
             return _cmd_sim(args)
+        if args.command == "link-key":
+            return _cmd_link_key(args)
     except CliError as exc:
         print(f"usv-station {args.command}: {exc}", file=sys.stderr)
         return exc.code
@@ -208,11 +233,12 @@ def format_plan(plan: dict[str, Any]) -> str:
 def _cmd_serve(args: argparse.Namespace) -> int:
     from pydantic import ValidationError
 
-    from usvstation.config import ExposureError, Settings
+    from usvstation.config import ExposureError, LinkKeyError, Settings
     from usvstation.scenario import format_validation_error
 
     flags = {k: getattr(args, k) for k in ("host", "port", "link", "baud", "data_dir", "token",
-                                           "viser_port", "sim_speed")
+                                           "viser_port", "sim_speed", "boat_id", "link_key",
+                                           "insecure_link")
              if getattr(args, k) is not None}
     try:
         settings = Settings(**flags)
@@ -223,6 +249,8 @@ def _cmd_serve(args: argparse.Namespace) -> int:
 
         return serve(settings, announce=lambda msg: print(msg, flush=True))
     except ExposureError as exc:
+        raise CliError(str(exc), EXIT_INVALID) from None
+    except LinkKeyError as exc:
         raise CliError(str(exc), EXIT_INVALID) from None
 
 
@@ -235,6 +263,19 @@ def _cmd_sim(args: argparse.Namespace) -> int:
         return asyncio.run(run_sim(args))
     except ValueError as exc:
         raise CliError(str(exc), EXIT_INVALID) from None
+
+
+def _cmd_link_key(args: argparse.Namespace) -> int:
+    from usvstation.link.wire import write_key
+
+    try:
+        write_key(args.path)
+    except FileExistsError:
+        raise CliError(f"{args.path} exists; refusing to overwrite a key", EXIT_INVALID) from None
+    except OSError as exc:
+        raise CliError(f"cannot write {args.path}: {exc.strerror}", EXIT_INVALID) from None
+    print(f"wrote a new link key to {args.path}; give the same file to the boat")
+    return EXIT_OK
 
 
 def _cmd_bench(args: argparse.Namespace) -> int:

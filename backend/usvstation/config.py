@@ -31,6 +31,10 @@ class Settings(BaseSettings):
     plan_workers: int = Field(2, ge=1, le=32)
     heartbeat_timeout_s: float = Field(3.0, gt=0.0)
     telemetry_hz: float = Field(5.0, gt=0.0, le=50.0)
+    boat_id: int = Field(1, ge=1, le=254, description="MAVLink system id of the paired boat")
+    station_id: int = Field(255, ge=1, le=255, description="this station's MAVLink system id")
+    link_key: Path | None = Field(None, description="usv-link signing key file (32 bytes hex)")
+    insecure_link: bool = Field(False, description="unsigned link: explicit opt-in only")
     frontend_dir: Path | None = Field(
         None, description="operator console files (index.html, app/, node_modules/); "
         "default: frontend/ of the source checkout")
@@ -83,3 +87,33 @@ def resolve_token(settings: Settings) -> str:
                 f"use at least {MIN_TOKEN_LENGTH}"
             )
     return token
+
+
+class LinkKeyError(ValueError):
+    """The link's signing settings are contradictory or the key file is unusable."""
+
+
+def resolve_link_key(settings: Settings) -> bytes | None:
+    """The usv-link signing key: --link-key, else with the simulated boat a key generated
+    in data_dir (link.key), so signing is on by default; None only with --insecure-link."""
+    from usvstation.link.wire import read_key, write_key
+
+    if settings.insecure_link:
+        if settings.link_key is not None:
+            raise LinkKeyError("--link-key and --insecure-link contradict each other")
+        return None
+    if settings.boat_id == settings.station_id:
+        raise LinkKeyError(f"boat_id and station_id are both {settings.boat_id}")
+    path = settings.link_key
+    if path is None:
+        if settings.link != "sim":
+            raise LinkKeyError("a boat link needs --link-key PATH (usv-station link-key new "
+                               "PATH) or, knowingly, --insecure-link")
+        path = settings.data_dir / "link.key"
+        if not path.exists():
+            settings.data_dir.mkdir(parents=True, exist_ok=True)
+            write_key(path)
+    try:
+        return read_key(path)
+    except OSError as exc:
+        raise LinkKeyError(f"link key {path}: {exc.strerror}") from None

@@ -362,7 +362,9 @@ async function command(name) {
   const buttons = document.querySelectorAll('[data-command]');
   buttons.forEach((b) => { b.disabled = true; });
   try {
-    const r = await api.post('/api/boat/command', { command: name });
+    const body = { command: name };
+    if (name === 'start' && state.mission) body.mission_id = state.mission.id;  // START names it
+    const r = await api.post('/api/boat/command', body);
     $('command-result').textContent = `${name.toUpperCase()}: ${r.result}, boat ${r.state ?? '–'}`;
     if (name === 'start') {
       state.follow = true;

@@ -59,6 +59,8 @@ class CommandRequest(BaseModel):
 
     model_config = ConfigDict(extra="forbid")
     command: Literal["start", "hold", "resume", "abort"]
+    mission_id: str | None = Field(None, min_length=1, max_length=64,
+                                   description="START: the mission to start (required)")
 
 
 def _utc(value: dt.datetime | None) -> str | None:
@@ -143,12 +145,21 @@ def create_app(station: Station) -> FastAPI:
             raise HTTPException(404, detail=f"no mission {mission_id!r}")
         return mission
 
+    @app.get("/api/missions/{mission_id}/verify", tags=["boat"],
+             responses={404: {"description": "no such mission"},
+                        409: {"description": "the boat does not hold it"},
+                        503: {"description": "the boat link is down"},
+                        504: {"description": "the boat did not answer the readback"}})
+    async def verify_mission(mission_id: str) -> dict[str, Any]:
+        """Read the boat's copy back and compare it item by item."""
+        return await station.boat.verify(mission_id)
+
     @app.post("/api/boat/command", tags=["boat"], dependencies=Auth,
               responses={409: {"description": "no verified mission, or the boat refused"},
                          503: {"description": "the boat link is down"},
                          504: {"description": "the boat did not acknowledge in time"}})
     async def boat_command(req: CommandRequest) -> dict[str, Any]:
-        return await station.boat.command(req.command)
+        return await station.boat.command(req.command, req.mission_id)
 
     @app.get("/api/boat", tags=["boat"])
     async def boat() -> dict[str, Any]:

@@ -298,8 +298,10 @@ STAGE_BEGIN, STAGE_ITEM, STAGE_END, STAGE_READ = 1, 2, 3, 4
 class MissionUploader:
     """BEGIN, then items in a sliding window (the boat's ACK.seq is cumulative: items
     staged contiguously from 0), then END. Each message is retried after the adaptive
-    timeout, at most max_attempts times; a refusal ends the upload with its reason,
-    except MISSING_ITEMS at END, which goes back to the first missing item."""
+    timeout, at most max_attempts times; the first missing item is also sent again at
+    once on the second ACK that does not advance (fast retransmit). A refusal ends the
+    upload with its reason, except MISSING_ITEMS at END, which goes back to the first
+    missing item."""
 
     def __init__(self, mission: Mission, cfg: LinkConfig, rtt: RttEstimator, now: float,
                  swap_at_ms: int = 0) -> None:
@@ -313,6 +315,7 @@ class MissionUploader:
         self.sent_at: dict[int, float] = {}
         self.next_index = 0
         self.retransmissions = 0
+        self.dup_acks = 0  # ACKs that did not advance base since it last moved
         self.result: UploadResult | None = None
 
     @property
@@ -383,8 +386,16 @@ class MissionUploader:
                 for k in range(self.base, min(ack.seq, self.mission.count)):
                     self.deadlines.pop(k, None)
                 self.base = min(ack.seq, self.mission.count)
+                self.dup_acks = 0
                 return self._fill(now), [self._progress()]
-            return self._fill(now), []
+            self.dup_acks += 1
+            out: list[tuple[str, Any]] = []
+            if self.dup_acks == 2 and self.base in self.deadlines:
+                # fast retransmit: two later items arrived, so `base` was lost
+                out = self._send(self.base, now)
+                if self.done:
+                    return [], [self.result]
+            return out + self._fill(now), []
         if ack.stage == STAGE_END and self.phase == "end":
             if ack.result == mav.USV_MISSION_MISSING_ITEMS and ack.seq < self.mission.count:
                 self.deadlines.pop(END, None)

@@ -131,7 +131,7 @@ class _CheckedMAVLink(mav.MAVLink):
         self.stream_floor = 0
         self.last_refusal = ""
 
-    def check_signature(self, msgbuf: bytearray, srcSystem: int, srcComponent: int) -> bool:  # noqa: N803
+    def check_signature(self, msgbuf: bytearray, srcSystem: int, srcComponent: int) -> bool:
         key = self.signing.secret_key
         assert key is not None
         tlow, thigh = self.mav_sign_unpacker.unpack(msgbuf[-12:-6])

@@ -72,7 +72,9 @@ class BoatConfig:
 @dataclass
 class NonVolatile:
     """What survives a reboot (flash on the STM32): the highest signing timestamp the
-    boat accepted from its station, written at most every PERSIST_PERIOD_S."""
+    boat accepted from its station, written at most every PERSIST_PERIOD_S. After a boot
+    the boat accepts only station timestamps above it + 2 PERSIST_PERIOD_S, so nothing
+    recorded before the reboot can be replayed."""
 
     sign_floor: int = 0
 
@@ -117,7 +119,7 @@ class BoatProtocol:
         self.key = key
         self.unix_time, self.started = unix_time, now
         self.boot_id = boot_id if boot_id is not None else random.SystemRandom().getrandbits(32)
-        floor = self.nv.sign_floor + int(PERSIST_PERIOD_S * wire.TICKS_PER_S) \
+        floor = self.nv.sign_floor + int(2 * PERSIST_PERIOD_S * wire.TICKS_PER_S) \
             if self.nv.sign_floor else 0
         self.codec = wire.Codec(cfg.boat_id, wire.BOAT_COMPONENT, key, link_id=cfg.link_id,
                                 timestamp=wire.signing_time(unix_time), stream_floor=floor,
@@ -507,12 +509,14 @@ class BoatProtocol:
             self.expired_id, self.staging = st.mission_id, None
             self._text(mav.MAV_SEVERITY_WARNING, f"staging of {st.mission_id} expired", now)
             self._report(now)
+        full = False
         if self.boat_time >= self.next_heartbeat:
             self._heartbeat(now)
             self.next_heartbeat = _next_on_grid(self.next_heartbeat, self.boat_time,
                                                 self.cfg.heartbeat_period_s)
+            full = True
         if self.boat_time >= self.next_telemetry:
-            self._send_telemetry(now)
+            self._send_telemetry(now, full)
             self.next_telemetry = _next_on_grid(self.next_telemetry, self.boat_time,
                                                 1.0 / self.cfg.telemetry_hz)
 
@@ -571,7 +575,9 @@ class BoatProtocol:
         return d
 
     # ---- telemetry
-    def _send_telemetry(self, now: float) -> None:
+    def _send_telemetry(self, now: float, full: bool = False) -> None:
+        """USV_THRUST and GLOBAL_POSITION_INT (last: it completes a station row) at
+        telemetry_hz; ATTITUDE, GPS_RAW_INT, VFR_HUD, NAV_CONTROLLER_OUTPUT with `full`."""
         s = self.vehicle.state
         e = self.codec.mav
         dx, dy = self.gps.sample(1.0 / self.cfg.telemetry_hz)
@@ -586,17 +592,19 @@ class BoatProtocol:
         vn, ve = s.speed * math.cos(math.radians(cog)), s.speed * math.sin(math.radians(cog))
         xte = -s.cross_track_error  # wire: positive left of the track
         send = self._send
-        send(e.attitude_encode(t_ms, 0.0, 0.0, yaw, 0.0, 0.0, -s.yaw_rate), now, telemetry=True)
-        send(e.gps_raw_int_encode(int(self.boat_time * 1e6), self.gps.fix_type, lat_e7, lon_e7,
-                                  0, _clamp(round(self.gps.hdop * 100), 0, 0xFFFE), 0xFFFF,
-                                  _clamp(round(s.speed * 100), 0, 0xFFFE),
-                                  round(cog * 100) % 36000, self.gps.satellites),
-             now, telemetry=True)
-        send(e.vfr_hud_encode(s.speed, s.speed, round(hdg) % 360,
-                              _clamp(round(50 * (abs(s.thrust_left) + abs(s.thrust_right))),
-                                     0, 100), 0.0, 0.0), now, telemetry=True)
-        send(e.nav_controller_output_encode(0.0, 0.0, round(hdg), round(cog), 0, 0.0, 0.0, xte),
-             now, telemetry=True)
+        if full:  # the slower streams: once a second, with the heartbeat
+            send(e.attitude_encode(t_ms, 0.0, 0.0, yaw, 0.0, 0.0, -s.yaw_rate), now,
+                 telemetry=True)
+            send(e.gps_raw_int_encode(
+                int(self.boat_time * 1e6), self.gps.fix_type, lat_e7, lon_e7, 0,
+                _clamp(round(self.gps.hdop * 100), 0, 0xFFFE), 0xFFFF,
+                _clamp(round(s.speed * 100), 0, 0xFFFE), round(cog * 100) % 36000,
+                self.gps.satellites), now, telemetry=True)
+            throttle = _clamp(round(50 * (abs(s.thrust_left) + abs(s.thrust_right))), 0, 100)
+            send(e.vfr_hud_encode(s.speed, s.speed, round(hdg) % 360, throttle, 0.0, 0.0), now,
+                 telemetry=True)
+            send(e.nav_controller_output_encode(0.0, 0.0, round(hdg), round(cog), 0, 0.0, 0.0,
+                                                xte), now, telemetry=True)
         send(e.usv_thrust_encode(t_ms, _clamp(round(s.thrust_left * 1000), -1000, 1000),
                                  _clamp(round(s.thrust_right * 1000), -1000, 1000), xte, 0.0),
              now, telemetry=True)
