@@ -48,6 +48,32 @@ def build_c_boat(build_dir: Path, target: str = "all") -> Path:
     return build_dir / name
 
 
+def conformance_argv() -> dict[str, list[str]]:
+    """The C boat's entry for tests/conformance BOATS: the host program built once into a
+    temporary directory (removed at exit), on a new pty, placed at case1's start; {} when no
+    C compiler is installed (test_c_boat_build.py then says so as its skip reason)."""
+    import atexit
+    import math
+    import tempfile
+
+    from usvstation.geo import RampFrame
+    from usvstation.scenario import load_scenario
+
+    if c_compiler() is None:
+        return {}
+    build = Path(tempfile.mkdtemp(prefix="usv-c-boat-"))
+    atexit.register(shutil.rmtree, build, True)
+    exe = build_c_boat(build)
+    case1 = load_scenario("case1")
+    o = case1.origin
+    frame = RampFrame(o.lat, o.lon, o.ramp_bearing_deg)
+    lat, lon = frame.to_geodetic(case1.start.x, case1.start.y)
+    compass = float(frame.ramp_bearing_deg - case1.start.heading_deg) % 360.0
+    assert math.isfinite(compass)
+    return {"c": [str(exe), "pty", "--lat", f"{float(lat):.9f}", "--lon", f"{float(lon):.9f}",
+                  "--heading-deg", f"{compass:g}", "--telemetry-hz", "5"]}
+
+
 def load_dialect() -> Any:
     """pymavlink's generated Python codec of protocol/usv_recovery.xml (the project's copy)."""
     from usvstation.link.mavlink import usv_recovery

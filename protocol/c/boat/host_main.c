@@ -447,7 +447,7 @@ int main(int argc, char **argv)
     host.veh.heading = fmod(heading + 720.0, 360.0) * PI_D / 180.0;
     host.veh.max_speed = cfg.max_speed_mps;
     host.veh.max_yaw_rate = 1.0;
-    host.veh.tau = 1.0;
+    host.veh.tau = 0.3;
     hal.send = hal_send;
     hal.now_ms = hal_now_ms;
     hal.actuate = hal_actuate;
@@ -466,7 +466,7 @@ int main(int argc, char **argv)
         if (listen_fd < 0) {
             return 1;
         }
-        printf("usv_boat_host: boat %d (station %d) listening on 127.0.0.1:%d, %s, speedup %g\n",
+        printf("usv_boat_host: boat %d (station %d) listening on 127.0.0.1:%d (%s, speedup %g)\n",
                (int)boat_id, (int)station_id, bound, insecure ? "INSECURE unsigned link"
                                                               : "signed link", speedup);
     } else if (strcmp(where, "pty") == 0) {
@@ -474,7 +474,7 @@ int main(int argc, char **argv)
         if (host.fd < 0) {
             return 1;
         }
-        printf("usv_boat_host: boat %d (station %d) on %s, %s, speedup %g\n", (int)boat_id,
+        printf("usv_boat_host: boat %d (station %d) on %s (%s, speedup %g)\n", (int)boat_id,
                (int)station_id, pty_name, insecure ? "INSECURE unsigned link" : "signed link",
                speedup);
     } else {
@@ -482,7 +482,7 @@ int main(int argc, char **argv)
         if (host.fd < 0) {
             return 1;
         }
-        printf("usv_boat_host: boat %d (station %d) on %s, %s, speedup %g\n", (int)boat_id,
+        printf("usv_boat_host: boat %d (station %d) on %s (%s, speedup %g)\n", (int)boat_id,
                (int)station_id, where, insecure ? "INSECURE unsigned link" : "signed link",
                speedup);
     }
