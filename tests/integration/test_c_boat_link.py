@@ -193,7 +193,7 @@ def test_wrong_sender_refused_and_does_not_refresh_failsafe(exe, d, key_path):
     with boat_and_station(exe, d, key_path) as (_, c):
         with heartbeats(c):
             upload_and_start(c, 11, line_north(3, leg_s=60))
-            t_last = boat_uptime_now(c)  # the station's last frame
+        t_last = boat_uptime_now(c)  # the station's last frame
         # a second boat (id 2, same key) keeps talking, including commands
         second = d.MAVLink(None, srcSystem=2, srcComponent=1)
         second.signing.secret_key = key
@@ -221,7 +221,7 @@ def test_own_echo_does_not_keep_the_link(exe, d, key_path):
     with boat_and_station(exe, d, key_path) as (_, c):
         with heartbeats(c):
             upload_and_start(c, 12, line_north(3, leg_s=60))
-            t_last = boat_uptime_now(c)
+        t_last = boat_uptime_now(c)  # the station's last frame
         start = c.mark()
         echoed = len(c.raw_in)
         deadline = time.monotonic() + 15
