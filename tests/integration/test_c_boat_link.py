@@ -81,13 +81,13 @@ def upload_and_start(c, mission_id, items, seq=1, session=4242):
     return c.wait_state(RUNNING, 10)
 
 
-def boat_uptime_now(c) -> float:
+def boat_uptime_now(c) -> int:
     """The boat's uptime (ms) at the instant it received our TIMESYNC (a station frame)."""
     ts1 = time.monotonic_ns()
     start = c.mark()
     c.send(c.d.MAVLink_timesync_message(0, ts1))
     reply = c.wait_for(lambda m: m.get_type() == "TIMESYNC" and m.ts1 == ts1, 10, start)
-    return reply.tc1 / 1e6
+    return reply.tc1 // 1_000_000
 
 
 def test_telemetry_signed_and_complete(exe, d, key_path):
@@ -365,3 +365,24 @@ def test_hot_swap_at_the_instant(exe, d, key_path):
         assert (s.active_id == 62) == (s.uptime_ms >= swap_at)
         if s.active_id == 62:
             assert s.active_crc32 == u32(mission_crc32(62, second))
+
+
+def test_telemetry_paced_to_the_line_replies_first(exe, d, key_path):
+    """At 9600 baud and 50 Hz telemetry (more than the line carries) the boat sends at most
+    the line rate, drops telemetry (counted in SYS_STATUS.errors_count2), never a reply."""
+    with boat_and_station(exe, d, key_path, extra=("--baud", "9600", "--telemetry-hz",
+                                                   "50")) as (_, c), heartbeats(c):
+        first = c.state()
+        with c._cv:
+            start_bytes, start_msgs = len(c.raw_in), len(c.msgs)
+        acks = [c.command(CMD_HOLD, seq, 5) for seq in range(1, 21)]
+        last = c.state()
+        while last.uptime_ms - first.uptime_ms < 2000:
+            last = c.state()
+        with c._cv:
+            sent = len(c.raw_in) - start_bytes
+        status = c.wait_for(lambda m: m.get_type() == "SYS_STATUS", 5, start_msgs)
+    assert all(a.result == ACCEPTED for a in acks)
+    boat_s = (last.uptime_ms - first.uptime_ms) / 1000
+    assert sent <= 960 * boat_s + 300  # the line's 960 bytes/s, plus the frame on the line
+    assert status.errors_count2 > 0

@@ -391,6 +391,23 @@ static void check_invariants(void)
     CHECK(boat.staging <= USV_STAGING_VERIFIED);
     CHECK(boat.active <= 1u);
     CHECK(boat.rx_head < USV_RX_RING && boat.rx_tail < USV_RX_RING);
+    CHECK(boat.tq_len <= USV_TELEMETRY_QUEUE);
+    {
+        uint16_t at = 0, k;
+        uint32_t ids[16];
+        unsigned nid = 0;
+        while (at < boat.tq_len) { /* whole entries, one per message id */
+            uint32_t id = (uint32_t)boat.tq[at] | ((uint32_t)boat.tq[at + 1u] << 8) |
+                          ((uint32_t)boat.tq[at + 2u] << 16);
+            for (k = 0; k < nid; k++) {
+                CHECK(ids[k] != id);
+            }
+            CHECK(nid < 16u);
+            ids[nid++] = id;
+            at = (uint16_t)(at + 4u + boat.tq[at + 3u]);
+        }
+        CHECK(at == boat.tq_len);
+    }
     if (boat.has_active) {
         CHECK(a->count >= 2u && a->count <= USV_MAX_ITEMS);
         CHECK(a->id != 0u);
@@ -448,6 +465,7 @@ int main(int argc, char **argv)
     cfg.link_timeout_ms = 3000;
     cfg.start_radius_m = 10.0f;
     cfg.max_speed_mps = 4.0f;
+    cfg.line_baud = (seed % 2u) ? 9600u : 0u; /* odd seeds pace telemetry on a 9600 line */
     hal.send = hal_send;
     hal.now_ms = hal_now;
     hal.actuate = hal_actuate;

@@ -5,14 +5,15 @@
  *   usv_boat_host DEVICE|PORT|pty (--link-key PATH | --insecure-link) [--boat-id N]
  *       [--station-id N] [--speedup X] [--lat DEG --lon DEG --heading-deg DEG]
  *       [--telemetry-hz HZ] [--start-radius M] [--link-timeout-s S] [--duration S]
- *       [--nv-file PATH]
+ *       [--nv-file PATH] [--baud BPS]
  *
  * A PORT (digits) listens on 127.0.0.1:PORT (0: any free port) for one client at a time,
  * e.g. `usv-station serve --link socket://127.0.0.1:PORT`; `pty` creates a pseudo-terminal
  * and prints its device (the station opens it); anything else is opened as a serial
  * device or pty slave (raw). --nv-file is the boat's non-volatile memory: the signing
  * floor (the newest signing timestamp seen), written every second and read at boot, so a
- * frame recorded before a reboot is refused after it even without a clock. The boat clock runs --speedup times the wall clock;
+ * frame recorded before a reboot is refused after it even without a clock. --baud paces
+ * the boat's telemetry to that line rate behind its replies (0, the default: no pacing). The boat clock runs --speedup times the wall clock;
  * the link timeouts (failsafe, duplicate memory, staging expiry) stay in wall time.
  * The "UART interrupt" is the read() of the main loop: bytes go to usv_boat_rx_byte(),
  * usv_boat_poll() parses them afterwards, as on the microcontroller.
@@ -296,7 +297,7 @@ static int usage(const char *why)
     fprintf(stderr, "usv_boat_host: %s\nusage: usv_boat_host DEVICE|PORT|pty (--link-key PATH | "
                     "--insecure-link) [--boat-id N] [--station-id N] [--speedup X] [--lat DEG] "
                     "[--lon DEG] [--heading-deg DEG] [--telemetry-hz HZ] [--start-radius M] "
-                    "[--link-timeout-s S] [--staging-expiry-s S] [--duration S] "
+                    "[--link-timeout-s S] [--staging-expiry-s S] [--baud BPS] [--duration S] "
                     "[--nv-file PATH]\n", why);
     return 2;
 }
@@ -343,7 +344,7 @@ int main(int argc, char **argv)
     double next_nv = 1.0;
     int insecure = 0, listen_fd = -1, port = -1, bound = 0, i;
     double boat_id = 1, station_id = 255, speedup = 1, lat = 59.9, lon = 10.7, heading = 0;
-    double tel_hz = 5, radius = 10, timeout_s = 3, duration = 0, staging_s = 30;
+    double tel_hz = 5, radius = 10, timeout_s = 3, duration = 0, staging_s = 30, baud = 0;
     double last_t, sim_t;
     struct timeval tv;
 
@@ -392,6 +393,8 @@ int main(int argc, char **argv)
             num = &radius, lo = 0.1, hi = 100000;
         } else if (strcmp(a, "--link-timeout-s") == 0) {
             num = &timeout_s, lo = 0.1, hi = 3600;
+        } else if (strcmp(a, "--baud") == 0) {
+            num = &baud, lo = 0, hi = 10000000;
         } else if (strcmp(a, "--staging-expiry-s") == 0) {
             num = &staging_s, lo = 0.1, hi = 3600;
         } else if (strcmp(a, "--duration") == 0) {
@@ -438,6 +441,10 @@ int main(int argc, char **argv)
     cfg.staging_expiry_ms = (uint32_t)(staging_s * 1000.0 * speedup + 0.5);
     cfg.start_radius_m = (float)radius;
     cfg.max_speed_mps = 4.0f;
+    cfg.line_baud = baud > 0 ? (uint32_t)(baud / speedup + 0.5) : 0u; /* in boat time */
+    if (baud > 0 && cfg.line_baud == 0u) {
+        cfg.line_baud = 1;
+    }
 
     host.fd = -1;
     host.speedup = speedup;

@@ -127,10 +127,108 @@ static float dist_to(const usv_boat_t *b, int32_t lat, int32_t lon)
 
 /* ------------------------------------------------------------------ sending */
 
-static void emit(usv_boat_t *b)
+/* Milliseconds of line time for n bytes (8N1: 10 bits a byte). */
+static uint32_t line_ms(const usv_boat_t *b, uint16_t n)
 {
-    uint16_t n = mavlink_msg_to_send_buffer(b->tx_buf, &b->tx_msg);
-    b->hal.send(b->hal.ctx, b->tx_buf, n);
+    return (uint32_t)(((uint64_t)n * 10000u + b->cfg.line_baud - 1u) / b->cfg.line_baud);
+}
+
+static void line_send(usv_boat_t *b, const uint8_t *buf, uint16_t n)
+{
+    if (b->cfg.line_baud != 0u) {
+        uint32_t now = uptime(b);
+        if (at_or_after(now, b->line_free_ms)) {
+            b->line_free_ms = now;
+        }
+        b->line_free_ms += line_ms(b, n);
+    }
+    b->hal.send(b->hal.ctx, buf, n);
+}
+
+static void sign_clock(usv_boat_t *b);
+
+/* Sign and send the message in tx_msg now (sequence number and signing time of now). */
+static void finalize_and_send(usv_boat_t *b)
+{
+    const mavlink_msg_entry_t *e = mavlink_get_msg_entry(b->tx_msg.msgid);
+    uint16_t n;
+    if (e == NULL) {
+        return;
+    }
+    sign_clock(b);
+    mavlink_finalize_message_buffer(&b->tx_msg, b->cfg.boat_id, COMP_ID, &b->tx_status,
+                                    e->min_msg_len, b->tx_msg.len, e->crc_extra);
+    n = mavlink_msg_to_send_buffer(b->tx_buf, &b->tx_msg);
+    line_send(b, b->tx_buf, n);
+}
+
+/* Replies (ACKs, readback, TIMESYNC, STATUSTEXT, HEARTBEAT, USV_MISSION_STATE) are signed
+ * and sent at once; telemetry waits unsigned in a small queue (msgid, length, payload)
+ * that is released, and only then numbered and signed, while the line is idle
+ * (line_baud): a reply never queues behind more than one telemetry frame, and signing
+ * timestamps stay in sending order. The queue holds one entry per message: a newer value
+ * replaces a waiting one in its place in line (counted as dropped), so every telemetry
+ * message keeps its turn when the line is slower than the telemetry rate. */
+static void emit(usv_boat_t *b, int urgent)
+{
+    uint16_t n = (uint16_t)(4u + b->tx_msg.len);
+    uint16_t at = 0;
+    uint8_t *q;
+    if (urgent || b->cfg.line_baud == 0u) {
+        finalize_and_send(b);
+        return;
+    }
+    while (at + 4u <= b->tq_len) { /* one entry per message: a newer value replaces it */
+        uint16_t m = (uint16_t)(4u + b->tq[at + 3u]);
+        uint32_t id = (uint32_t)b->tq[at] | ((uint32_t)b->tq[at + 1u] << 8) |
+                      ((uint32_t)b->tq[at + 2u] << 16);
+        if (id == b->tx_msg.msgid) {
+            memmove(b->tq + at, b->tq + at + m, (size_t)(b->tq_len - at - m));
+            b->tq_len = (uint16_t)(b->tq_len - m);
+            if (b->telemetry_dropped < UINT16_MAX) {
+                b->telemetry_dropped++;
+            }
+            break;
+        }
+        at = (uint16_t)(at + m);
+    }
+    if (at > b->tq_len) {
+        at = b->tq_len;
+    }
+    if (b->tq_len + n > USV_TELEMETRY_QUEUE) {
+        if (b->telemetry_dropped < UINT16_MAX) {
+            b->telemetry_dropped++;
+        }
+        return;
+    }
+    /* the new value takes the old one's place in line (or the end) */
+    memmove(b->tq + at + n, b->tq + at, (size_t)(b->tq_len - at));
+    q = b->tq + at;
+    q[0] = (uint8_t)b->tx_msg.msgid;
+    q[1] = (uint8_t)(b->tx_msg.msgid >> 8);
+    q[2] = (uint8_t)(b->tx_msg.msgid >> 16);
+    q[3] = b->tx_msg.len;
+    memcpy(q + 4, _MAV_PAYLOAD(&b->tx_msg), b->tx_msg.len);
+    b->tq_len = (uint16_t)(b->tq_len + n);
+}
+
+/* Release queued telemetry while the line is idle. */
+static void drain_telemetry(usv_boat_t *b, uint32_t now)
+{
+    while (b->tq_len >= 4u && at_or_after(now, b->line_free_ms)) {
+        uint16_t n = (uint16_t)(4u + b->tq[3]);
+        if (n > b->tq_len) {
+            b->tq_len = 0; /* cannot happen: only whole entries are queued */
+            return;
+        }
+        b->tx_msg.msgid = (uint32_t)b->tq[0] | ((uint32_t)b->tq[1] << 8) |
+                          ((uint32_t)b->tq[2] << 16);
+        b->tx_msg.len = b->tq[3];
+        memcpy(_MAV_PAYLOAD_NON_CONST(&b->tx_msg), b->tq + 4, b->tq[3]);
+        memmove(b->tq, b->tq + n, (size_t)(b->tq_len - n));
+        b->tq_len = (uint16_t)(b->tq_len - n);
+        finalize_and_send(b);
+    }
 }
 
 /* Advance the outgoing signing timestamp with the boat clock (10 us units). */
@@ -144,12 +242,19 @@ static void sign_clock(usv_boat_t *b)
     }
 }
 
+/* pack only (the scratch status neither numbers nor signs); emit() finalizes */
+#define PACK(name, value)                                                                 \
+    mavlink_msg_##name##_encode_status(b->cfg.boat_id, COMP_ID, &b->pack_status, &b->tx_msg, \
+                                       (value))
 #define SEND(name, value)                                                                 \
     do {                                                                                  \
-        sign_clock(b);                                                                    \
-        mavlink_msg_##name##_encode_status(b->cfg.boat_id, COMP_ID, &b->tx_status,       \
-                                           &b->tx_msg, (value));                          \
-        emit(b);                                                                          \
+        PACK(name, value);                                                                \
+        emit(b, 1);                                                                       \
+    } while (0)
+#define TELEMETRY(name, value)                                                            \
+    do {                                                                                  \
+        PACK(name, value);                                                                \
+        emit(b, 0);                                                                       \
     } while (0)
 
 /* A small text builder (no printf on the boat). */
@@ -301,18 +406,19 @@ static void send_slow_telemetry(usv_boat_t *b)
     g.epv = UINT16_MAX;
     g.vel = (uint16_t)clampf(b->nav.speed_mps * 100.0f, 0.0f, 65534.0f);
     g.cog = cdeg(b->nav.course_rad);
-    SEND(gps_raw_int, &g);
+    TELEMETRY(gps_raw_int, &g);
     memset(&s, 0, sizeof s);
     s.voltage_battery = b->nav.battery_mv;
     s.current_battery = -1;
     s.battery_remaining = b->nav.battery_pct;
     s.errors_comm = b->rx_overruns;
     s.errors_count1 = b->rejected;
+    s.errors_count2 = b->telemetry_dropped;
     s.onboard_control_sensors_present = MAV_SYS_STATUS_SENSOR_GPS | MAV_SYS_STATUS_SENSOR_MOTOR_OUTPUTS;
     s.onboard_control_sensors_enabled = s.onboard_control_sensors_present;
     s.onboard_control_sensors_health = MAV_SYS_STATUS_SENSOR_MOTOR_OUTPUTS |
         (b->nav.fix_type >= GPS_FIX_TYPE_3D_FIX ? MAV_SYS_STATUS_SENSOR_GPS : 0u);
-    SEND(sys_status, &s);
+    TELEMETRY(sys_status, &s);
 }
 
 static void send_fast_telemetry(usv_boat_t *b)
@@ -329,25 +435,25 @@ static void send_fast_telemetry(usv_boat_t *b)
     p.vx = (int16_t)clampf(b->nav.speed_mps * cosf(b->nav.course_rad) * 100.0f, -32000, 32000);
     p.vy = (int16_t)clampf(b->nav.speed_mps * sinf(b->nav.course_rad) * 100.0f, -32000, 32000);
     p.hdg = cdeg(b->nav.heading_rad);
-    SEND(global_position_int, &p);
+    TELEMETRY(global_position_int, &p);
     memset(&a, 0, sizeof a);
     a.time_boot_ms = t;
     a.yaw = wrap_pi(b->nav.heading_rad);
     a.yawspeed = b->nav.yaw_rate;
-    SEND(attitude, &a);
+    TELEMETRY(attitude, &a);
     memset(&v, 0, sizeof v);
     v.groundspeed = b->nav.speed_mps;
     v.airspeed = b->nav.speed_mps;
     v.heading = (int16_t)(cdeg(b->nav.heading_rad) / 100u);
     v.throttle = (uint16_t)((abs(b->thrust_left) + abs(b->thrust_right)) / 20);
-    SEND(vfr_hud, &v);
+    TELEMETRY(vfr_hud, &v);
     memset(&th, 0, sizeof th);
     th.time_boot_ms = t;
     th.left_pm = b->thrust_left;
     th.right_pm = b->thrust_right;
     th.cross_track = b->cross_track;
     th.slip = b->slip;
-    SEND(usv_thrust, &th);
+    TELEMETRY(usv_thrust, &th);
 }
 
 /* ------------------------------------------------------------------ refusals */
@@ -1277,4 +1383,5 @@ void usv_boat_poll(usv_boat_t *b)
         send_fast_telemetry(b);
     }
     report_refusals(b, now);
+    drain_telemetry(b, now);
 }

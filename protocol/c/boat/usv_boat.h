@@ -25,6 +25,9 @@
 #ifndef USV_RX_RING
 #define USV_RX_RING 512 /* receive ring buffer, bytes; a power of two */
 #endif
+#ifndef USV_TELEMETRY_QUEUE
+#define USV_TELEMETRY_QUEUE 256 /* queued telemetry: 4 + payload bytes a message */
+#endif
 #define USV_DUP_SLOTS 8              /* remembered commands */
 #define USV_DUP_EXPIRY_MS 5000u      /* default duplicate memory expiry */
 #define USV_STAGING_EXPIRY_MS 30000u /* default staging expiry without progress */
@@ -66,6 +69,8 @@ typedef struct {
     uint32_t staging_expiry_ms;   /* staging dropped without progress (0: 30000) */
     float start_radius_m;         /* START refused farther from waypoint 0 */
     float max_speed_mps;          /* the hull's top speed at full thrust */
+    uint32_t line_baud;           /* link line rate in bit/s of boat time for pacing
+                                     telemetry behind replies; 0: no pacing */
 } usv_config_t;
 
 /* Boat states (USV_BOAT_STATE) and staging states (USV_STAGING_STATE) come from the
@@ -110,10 +115,15 @@ typedef struct {
     mavlink_message_t rx_msg;
     mavlink_status_t rx_status;
     mavlink_status_t tx_status;
+    mavlink_status_t pack_status; /* scratch for packing: never signs */
     mavlink_signing_t signing;
     mavlink_signing_streams_t streams;
     mavlink_message_t tx_msg;
     uint8_t tx_buf[MAVLINK_MAX_PACKET_LEN];
+    uint8_t tq[USV_TELEMETRY_QUEUE]; /* telemetry waiting for an idle line */
+    uint16_t tq_len;
+    uint16_t telemetry_dropped;
+    uint32_t line_free_ms; /* boat uptime when the line has sent what it was given */
 
     /* missions: two buffers; `active` indexes the active one, the other stages */
     usv_mission_t mission[2];
