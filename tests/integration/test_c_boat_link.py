@@ -381,7 +381,7 @@ def test_telemetry_paced_to_the_line_replies_first(exe, d, key_path):
             last = c.state()
         with c._cv:
             sent = len(c.raw_in) - start_bytes
-        status = c.wait_for(lambda m: m.get_type() == "SYS_STATUS", 5, start_msgs)
+        status = c.wait_for(lambda m: m.get_type() == "SYS_STATUS", 5, c.mark())
     assert all(a.result == ACCEPTED for a in acks)
     boat_s = (last.uptime_ms - first.uptime_ms) / 1000
     assert sent <= 960 * boat_s + 300  # the line's 960 bytes/s, plus the frame on the line
