@@ -374,7 +374,7 @@ def test_telemetry_paced_to_the_line_replies_first(exe, d, key_path):
                                                    "50")) as (_, c), heartbeats(c):
         first = c.state()
         with c._cv:
-            start_bytes, start_msgs = len(c.raw_in), len(c.msgs)
+            start_bytes = len(c.raw_in)
         acks = [c.command(CMD_HOLD, seq, 5) for seq in range(1, 21)]
         last = c.state()
         while last.uptime_ms - first.uptime_ms < 2000:
