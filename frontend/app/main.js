@@ -390,11 +390,15 @@ async function pollBoat() {
     const link = boat.link;
     setPill($('link-state'), link.up ? `link up${link.simulated ? ' (simulated boat)' : ''}`
       : `link down${link.error ? `: ${link.error}` : ''}`, link.up ? 'ok' : 'bad');
+    if (link.warning) setPill($('link-state'), `${$('link-state').textContent}: ${link.warning}`, 'bad');
     $('hb-age').textContent = fmt(link.heartbeat_age_s);
     $('tm-age').textContent = fmt(link.telemetry_age_s);
     $('frames').textContent = String(link.frames ?? '–');
     $('frames-lost').textContent = link.frames_lost == null ? '–' : String(link.frames_lost);
-    if (boat.boat) $('boat-state').textContent = `${boat.boat.state} (${boat.boat.mode})`;
+    if (boat.boat) {
+      const b = boat.boat;
+      $('boat-state').textContent = b.mission_id ? `${b.state} (mission ${b.mission_id})` : b.state;
+    }
   } catch (err) {
     setPill($('link-state'), `station unreachable`, 'bad');
   }

@@ -605,6 +605,8 @@ class StationProtocol:
         self.latest: dict[str, Any] = {}  # latest message of each type from the boat
         self.radio: Any = None  # latest RADIO_STATUS
         self.refused: Counter[str] = Counter()
+        self.frames_lost = 0
+        self._last_seq: int | None = None
         self.next_timesync = self.now
         self._timesync_sent: dict[int, float] = {}
         self.clock_offset_s: float | None = None  # boat uptime - station now
@@ -655,6 +657,10 @@ class StationProtocol:
             self.monitor.other_systems[src] += 1
             return []
         events = self.monitor.on_boat_frame(msg, now)
+        seq = msg.get_seq()
+        if self._last_seq is not None:
+            self.frames_lost += (seq - self._last_seq - 1) % 256  # MAVLink sequence gaps
+        self._last_seq = seq
         self.latest[kind] = msg
         if kind == "USV_MISSION_STATE":
             rep = MissionState.from_msg(msg)
@@ -701,12 +707,12 @@ class StationProtocol:
 
     def _telemetry(self, gp: Any) -> Telemetry:
         get = self.latest.get
-        gps, att, hud = get("GPS_RAW_INT"), get("ATTITUDE"), get("VFR_HUD")
+        gps, att = get("GPS_RAW_INT"), get("ATTITUDE")
         sysst, thr, nav = get("SYS_STATUS"), get("USV_THRUST"), get("NAV_CONTROLLER_OUTPUT")
         vn, ve = gp.vx / 100, gp.vy / 100
         from math import atan2, degrees, hypot
 
-        speed = hud.groundspeed if hud is not None else hypot(vn, ve)
+        speed = hypot(vn, ve)  # current, unlike VFR_HUD (1 Hz)
         course = degrees(atan2(ve, vn)) % 360 if hypot(vn, ve) > 0.01 else \
             (gp.hdg / 100 if gp.hdg != 0xFFFF else 0.0)
         state = self.report.state if self.report is not None else "IDLE"

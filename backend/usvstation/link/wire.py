@@ -178,6 +178,7 @@ class Codec:
         self.refused: Counter[str] = Counter()
         self.frames_in = 0
         self.bytes_out = 0
+        self._allowed = frozenset(allow_unsigned)
         if key is not None:
             if len(key) != KEY_BYTES:
                 raise ValueError(f"link key: {len(key)} bytes, expected {KEY_BYTES}")
@@ -212,8 +213,9 @@ class Codec:
         return data
 
     def feed(self, data: bytes) -> tuple[list[Any], list[Refused]]:
-        """Decode received bytes: accepted messages and refused frames (noise is counted
-        as corrupt without a record)."""
+        """Decode received bytes: accepted messages and refused frames (noise and unknown
+        message ids are counted as corrupt/unknown without a record). With a key, only
+        validly signed messages pass, apart from the `allow_unsigned` ids."""
         msgs: list[Any] = []
         refused: list[Refused] = []
         for msg in self.mav.parse_buffer(data) or ():
@@ -228,6 +230,14 @@ class Codec:
                     refused.append(Refused(why, sysid, msg_id))
                 else:
                     self.refused["corrupt"] += 1
+                continue
+            if isinstance(msg, mav.MAVLink_unknown):
+                self.refused["unknown"] += 1  # pymavlink checks neither CRC nor signature
+                continue
+            if self.key is not None and not msg._signed \
+                    and msg.get_msgId() not in self._allowed:
+                self.refused["unsigned"] += 1
+                refused.append(Refused("unsigned", msg.get_srcSystem(), msg.get_msgId()))
                 continue
             self.frames_in += 1
             msgs.append(msg)

@@ -1,6 +1,6 @@
-"""The boat service: missions, commands and runs on top of the link (services/boat_link.py),
-with the embedded simulated boat's lifetime in services/simboat.py and the mission state
-machine in services/missions.py.
+"""The boat service: missions and commands on top of the link (services/boat_link.py), with
+the mission state machine in services/missions.py, runs in services/runs.py and the
+embedded simulated boat's lifetime in services/simboat.py.
 
 Safety rules kept here (the boat keeps its own, protocol/README.md):
 - one upload at a time; every mission state is derived from the boat's USV_MISSION_STATE;
@@ -33,6 +33,7 @@ from usvstation.services.boat_link import LinkHandler
 from usvstation.services.hub import LiveHub
 from usvstation.services.missions import MissionRecord, MissionStatus
 from usvstation.services.plans import PlanService
+from usvstation.services.runs import Runs
 from usvstation.services.simboat import EmbeddedSim
 from usvstation.store.db import Store, utc_now
 from usvstation.viz.view import ThreeDView
@@ -66,12 +67,16 @@ class BoatService:
         self.uploading: MissionRecord | None = None
         self._last_progress: dict[str, float] = {}
         self._tasks: set[asyncio.Task] = set()
+        self.runs = Runs(store, hub, plans, view)
 
     # --- lifecycle -------------------------------------------------------------------------
     async def start(self, scenario: Scenario) -> None:
         rows = await asyncio.to_thread(recover_missions, self.store)
         self.missions = {k: MissionRecord.from_row(v) for k, v in rows.items()}
         await asyncio.to_thread(self.store.close_stale_runs)
+        for rec in self.missions.values():
+            if rec.state == MissionStatus.ACTIVE:
+                rec.run = None  # its run closed as interrupted; the boat's report reopens one
         if self.settings.link == "sim" and self._stream_factory is None:
             if scenario.origin is None:
                 raise ValueError("the simulated boat needs a working scenario with an origin")
@@ -85,6 +90,7 @@ class BoatService:
         link = BoatLink(device, baud=baud, stream_factory=factory, config=config, key=self.key)
         self.handler = LinkHandler(link, device, self.store, self.hub, self.view,
                                    self._on_report, self._on_reboot)
+        self.runs.handler = self.handler
         if scenario.origin is not None:
             o = scenario.origin
             self.handler.frame = RampFrame(o.lat, o.lon, o.ramp_bearing_deg)
@@ -231,6 +237,8 @@ class BoatService:
         rec: MissionRecord | None = None
         if name == "start":
             if mission_id is None:
+                if not any(r.state == MissionStatus.VERIFIED for r in self.missions.values()):
+                    raise BoatError(409, "no verified mission to start: upload a plan first")
                 raise BoatError(409, "START names its mission: send mission_id")
             rec = self.missions.get(mission_id)
             if rec is None:
@@ -248,6 +256,11 @@ class BoatService:
             raise BoatError(503, str(exc)) from None
         if outcome.result is None:
             raise BoatError(504, f"the boat did not acknowledge {name.upper()}: {outcome.error}")
+        acked_at = link.protocol.now
+        for _ in range(50):  # the boat reports its new state right after the ACK
+            if link.protocol.report_at >= acked_at:
+                break
+            await asyncio.sleep(0.01)
         report = link.report
         answer = {"command": name, "result": _result_name(outcome.result),
                   "reason": outcome.reason or None,
@@ -278,32 +291,11 @@ class BoatService:
         self.hub.publish("link", {"up": True, "rebooted": True, "boot_id": ev.new_boot_id})
 
     async def _begin_run(self, rec: MissionRecord) -> None:
-        if rec.run is not None and self.handler is not None and self.handler.run == rec.run:
-            return
-        rec.run = -1  # claimed: reports arrive faster than the store answers
-        run = await asyncio.to_thread(self.store.open_run, rec.id, rec.plan_id)
-        rec.run = run
-        h = self.handler
-        if h is not None:
-            h.run, h.run_t0 = run, None
-            h.frame = RampFrame(rec.origin["lat"], rec.origin["lon"],
-                                rec.origin["ramp_bearing_deg"])
-        job = self.plans.get(rec.plan_id)
-        if self.view is not None and job and job.get("plan"):
-            self.view.show_plan(job["plan"])
-            self.view.clear_track()
+        await self.runs.begin(rec)
         await self._save(rec)
-        self.hub.publish("run", {"id": run, "mission": rec.id, "state": "active"})
 
     async def _end_run(self, rec: MissionRecord) -> None:
-        """Close the run; its telemetry is committed before anyone hears it ended."""
-        run, h = rec.run, self.handler
-        if h is not None and h.run == run:
-            h.run = None
-        await asyncio.to_thread(self.store.writer.flush)
-        if run is not None and run > 0:
-            await asyncio.to_thread(self.store.close_run, run, rec.state.value)
-            self.hub.publish("run", {"id": run, "mission": rec.id, "state": rec.state.value})
+        await self.runs.end(rec)
 
     def _spawn(self, coro: Any) -> None:
         task = asyncio.get_running_loop().create_task(coro)

@@ -68,6 +68,7 @@ class LinkHandler:
                 "other_systems": {str(k): v for k, v in sorted(p.other_systems.items())},
                 "refused": dict(p.refused),
                 "frames_bad": p.refused.get("corrupt", 0),
+                "frames_lost": p.frames_lost,
                 "rtt_s": None if p.rtt.srtt is None else round(p.rtt.srtt, 4),
                 "error": self.link.last_error or None,
             },

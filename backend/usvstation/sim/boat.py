@@ -150,13 +150,13 @@ class BoatProtocol:
         self._text_budget_at = -math.inf
         self._swap_mission: ActiveMission | None = None
         self._urgent = bytearray()
-        self._telemetry: deque[bytes] = deque()
+        self._telemetry: deque[Any] = deque()  # messages, signed when they go out
         self._line_free_at = now
 
     # ---- I/O boundary
     @property
     def uptime_ms(self) -> int:
-        return int(self.boat_time * 1000) & 0xFFFFFFFF
+        return int(round(self.boat_time * 1000, 6)) & 0xFFFFFFFF
 
     def _stamp(self, now: float) -> int:
         return wire.signing_time(self.unix_time + now - self.started)
@@ -180,21 +180,21 @@ class BoatProtocol:
         if baud:
             self._line_free_at = max(self._line_free_at, t) + len(out) * 10 / baud
         while self._telemetry and (not baud or self._line_free_at <= t):
-            frame = self._telemetry.popleft()
+            # signed now, not when queued: signing timestamps must rise in sending order
+            frame = self.codec.encode(self._telemetry.popleft(), self._stamp(t))
             out += frame
             if baud:
                 self._line_free_at = max(self._line_free_at, t) + len(frame) * 10 / baud
         return out
 
     def _send(self, msg: Any, now: float, *, telemetry: bool = False) -> None:
-        data = self.codec.encode(msg, self._stamp(now))
         if telemetry:
-            self._telemetry.append(data)
+            self._telemetry.append(msg)
             while len(self._telemetry) > 16:
                 self._telemetry.popleft()
                 self.telemetry_dropped += 1
         else:
-            self._urgent += data
+            self._urgent += self.codec.encode(msg, self._stamp(now))
 
     def _text(self, severity: int, text: str, now: float) -> None:
         self.log.append(text)
@@ -488,12 +488,27 @@ class BoatProtocol:
         dt_link = max(0.0, now - self.last_now)
         self.last_now = now
         target = self.boat_time + dt_link * self.cfg.sim_speed
-        st = self.staging
-        if st is not None and st.state == ST_VERIFIED and st.swap_at_ms:
-            swap_t = st.swap_at_ms / 1000
-            if swap_t <= target:
-                self._advance(swap_t - self.boat_time)
+        while True:  # each timer at its own boat-time instant, in order
+            st = self.staging
+            swap_t = st.swap_at_ms / 1000 if st is not None and st.state == ST_VERIFIED \
+                and st.swap_at_ms else math.inf
+            due = min(swap_t, self.next_heartbeat, self.next_telemetry)
+            if due > target:
+                break
+            self._advance(due - self.boat_time)
+            if due == swap_t:
                 self._do_swap(now)
+                continue
+            full = False
+            if self.next_heartbeat <= due:
+                self._heartbeat(now)
+                self.next_heartbeat = _next_on_grid(self.next_heartbeat, self.boat_time,
+                                                    self.cfg.heartbeat_period_s)
+                full = True
+            if self.next_telemetry <= due:
+                self._send_telemetry(now, full)
+                self.next_telemetry = _next_on_grid(self.next_telemetry, self.boat_time,
+                                                    1.0 / self.cfg.telemetry_hz)
         self._advance(target - self.boat_time)
         if self.guided_until is not None and now >= self.guided_until:
             self._clear_guidance()
@@ -509,16 +524,6 @@ class BoatProtocol:
             self.expired_id, self.staging = st.mission_id, None
             self._text(mav.MAV_SEVERITY_WARNING, f"staging of {st.mission_id} expired", now)
             self._report(now)
-        full = False
-        if self.boat_time >= self.next_heartbeat:
-            self._heartbeat(now)
-            self.next_heartbeat = _next_on_grid(self.next_heartbeat, self.boat_time,
-                                                self.cfg.heartbeat_period_s)
-            full = True
-        if self.boat_time >= self.next_telemetry:
-            self._send_telemetry(now, full)
-            self.next_telemetry = _next_on_grid(self.next_telemetry, self.boat_time,
-                                                1.0 / self.cfg.telemetry_hz)
 
     def _do_swap(self, now: float) -> None:
         st, new = self.staging, self._swap_mission
@@ -550,13 +555,14 @@ class BoatProtocol:
         self._report(now)
 
     def _advance(self, dt: float) -> None:
-        while dt > 1e-9:
-            h = min(dt, self.cfg.max_step_s)
+        end = self.boat_time + dt
+        while end - self.boat_time > 1e-9:
+            h = min(end - self.boat_time, self.cfg.max_step_s)
             self.vehicle.step(h)
             s = self.vehicle.state
             self.battery.step(h, s.thrust_left, s.thrust_right)
             self.boat_time += h
-            dt -= h
+        self.boat_time = max(self.boat_time, end)
 
     def next_deadline(self) -> float:
         """Link time of the next timer (telemetry, heartbeat, failsafe, guidance, swap)."""
