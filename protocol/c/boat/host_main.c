@@ -430,8 +430,10 @@ int main(int argc, char **argv)
     cfg.boot_timestamp = ((uint64_t)tv.tv_sec - 1420070400u) * 100000u +
                          (uint64_t)tv.tv_usec / 10u;
     floor_saved = nv_read(nv_path);
-    if (floor_saved >= cfg.boot_timestamp) {
-        cfg.boot_timestamp = floor_saved + 1u; /* never accept what was seen before boot */
+    if (floor_saved != 0u && floor_saved + 200000u > cfg.boot_timestamp) {
+        /* never accept what was seen before the reboot: the floor is written once a second,
+           so frames of the last second before it may be newer; 2 s covers them */
+        cfg.boot_timestamp = floor_saved + 200000u;
     }
     cfg.boot_id = random_u32();
     cfg.telemetry_period_ms = (uint32_t)(1000.0 / tel_hz + 0.5);

@@ -421,13 +421,13 @@ static void send_slow_telemetry(usv_boat_t *b)
     TELEMETRY(sys_status, &s);
 }
 
-static void send_fast_telemetry(usv_boat_t *b)
+/* t: the telemetry grid instant (boat uptime) */
+static void send_fast_telemetry(usv_boat_t *b, uint32_t t)
 {
     mavlink_global_position_int_t p;
     mavlink_attitude_t a;
     mavlink_vfr_hud_t v;
     mavlink_usv_thrust_t th;
-    uint32_t t = uptime(b);
     memset(&p, 0, sizeof p);
     p.time_boot_ms = t;
     p.lat = b->nav.lat_e7;
@@ -1377,10 +1377,12 @@ void usv_boat_poll(usv_boat_t *b)
         }
     }
     if (at_or_after(now, b->next_telemetry_ms)) {
-        b->next_telemetry_ms = at_or_after(now, b->next_telemetry_ms + b->cfg.telemetry_period_ms)
-                                   ? now + b->cfg.telemetry_period_ms
-                                   : b->next_telemetry_ms + b->cfg.telemetry_period_ms;
-        send_fast_telemetry(b);
+        uint32_t due = b->next_telemetry_ms;
+        if (at_or_after(now, due + b->cfg.telemetry_period_ms)) {
+            due = now; /* fell behind by a whole period: restart the grid here */
+        }
+        b->next_telemetry_ms = due + b->cfg.telemetry_period_ms;
+        send_fast_telemetry(b, due);
     }
     report_refusals(b, now);
     drain_telemetry(b, now);

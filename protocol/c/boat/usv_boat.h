@@ -183,8 +183,9 @@ void usv_boat_set_nav(usv_boat_t *b, const usv_nav_t *nav);
 /* Main loop: parse received bytes, act, send replies first, then due telemetry. */
 void usv_boat_poll(usv_boat_t *b);
 
-/* The newest signing timestamp sent or accepted: persist it (non-volatile memory) and pass
- * it back as boot_timestamp after a reboot, so that recorded frames stay refused. */
+/* The newest signing timestamp sent or accepted: persist it (non-volatile memory, at most
+ * once a second) and pass it back plus 2 s (200000) as boot_timestamp after a reboot (or
+ * the GPS time if later), so that frames recorded before the reboot stay refused. */
 uint64_t usv_boat_signing_floor(const usv_boat_t *b);
 
 /* CRC-32 (IEEE 802.3, reflected, as zlib.crc32) continuing from `crc`. */
