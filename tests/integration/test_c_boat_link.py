@@ -24,6 +24,7 @@ from c_boat_support import (
     READY,
     RUNNING,
     CBoat,
+    Item,
     MavClient,
     build_c_boat,
     c_compiler,
@@ -33,6 +34,7 @@ from c_boat_support import (
     mission_crc32,
     u32,
 )
+from hypothesis import strategies as st
 
 pytestmark = pytest.mark.skipif(c_compiler() is None,
                                 reason="no C compiler (cc/gcc) to build protocol/c/boat")
@@ -386,3 +388,55 @@ def test_telemetry_paced_to_the_line_replies_first(exe, d, key_path):
     boat_s = (last.uptime_ms - first.uptime_ms) / 1000
     assert sent <= 960 * boat_s + 300  # the line's 960 bytes/s, plus the frame on the line
     assert status.errors_count2 > 0
+
+
+_item = st.tuples(st.integers(-900_000_000, 900_000_000),
+                  st.integers(-1_800_000_000, 1_800_000_000), st.integers(1, 600_000),
+                  st.integers(0, 3000), st.integers(0, 35999), st.integers(0, 35999))
+
+
+def test_any_valid_mission_verifies_with_the_python_crc32(exe, d, key_path):
+    """Random in-range missions: the C boat's CRC-32 equals wire.item_crc32 and it
+    activates them; one value out of range is refused at that item."""
+    from hypothesis import given, settings
+
+    from usvstation.link import wire
+    from usvstation.link.mission import MissionItem
+
+    with boat_and_station(exe, d, key_path) as (_, c), heartbeats(c):
+        seq = iter(range(1, 10_000))
+
+        @settings(max_examples=15, deadline=None, database=None)
+        @given(st.integers(1, 2**32 - 1), st.lists(_item, min_size=2, max_size=12),
+               st.integers(0, 5))
+        def check(mission_id, raw, bad_field):
+            t, items = 0, []
+            for k, (lat, lon, dt, speed, course, heading) in enumerate(raw):
+                t = 0 if k == 0 else t + dt
+                items.append(Item(lat, lon, t, speed, course, heading))
+            wire_items = [MissionItem(mission_id, k, it.lat, it.lon, it.t_ms, it.speed_cms,
+                                      it.course_cdeg, it.heading_cdeg)
+                          for k, it in enumerate(items)]
+            assert mission_crc32(mission_id, items) == wire.item_crc32(wire_items)
+            assert c.command(CMD_ABORT, next(seq), 1).result == ACCEPTED
+            end = c.upload(mission_id, items)
+            assert (end.result, end.stage) == (M_ACCEPTED, 3)
+            held = c.state()
+            assert (held.active_id, held.active_crc32, held.state) == \
+                (mission_id, wire.item_crc32(wire_items), READY)
+            # the same mission with one value out of range: refused at that item
+            broken = list(items)
+            k = len(items) - 1
+            it = broken[k]
+            broken[k] = [Item(910_000_000, it.lon, it.t_ms, it.speed_cms, 0, 0),
+                         Item(it.lat, 1_810_000_000, it.t_ms, it.speed_cms, 0, 0),
+                         Item(it.lat, it.lon, it.t_ms, 3001, 0, 0),
+                         Item(it.lat, it.lon, it.t_ms, 100, 36000, 0),
+                         Item(it.lat, it.lon, it.t_ms, 100, 0, 36000),
+                         Item(it.lat, it.lon, it.t_ms, 100, 0, 0)][bad_field]
+            if bad_field == 5:  # times not increasing: refused at END
+                broken[k] = Item(it.lat, it.lon, broken[k - 1].t_ms, 100, 0, 0)
+            nak = c.upload(u32(mission_id + 1) or 1, broken)
+            assert nak.result == M_OUT_OF_RANGE and nak.seq == k
+
+        check()
