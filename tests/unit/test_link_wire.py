@@ -76,3 +76,19 @@ def test_key_files(tmp_path):
     (tmp_path / "text").write_text("not hex\n")
     with pytest.raises(ValueError, match="not hexadecimal"):
         wire.read_key(tmp_path / "text")
+
+
+def test_link_key_settings(tmp_path):
+    from usvstation.config import LinkKeyError, Settings, resolve_link_key
+
+    sim = Settings(data_dir=tmp_path / "d")
+    key = resolve_link_key(sim)  # the embedded sim: a key generated into the data dir
+    assert len(key) == 32 and resolve_link_key(sim) == key
+    assert (tmp_path / "d" / "link.key").exists()
+    with pytest.raises(LinkKeyError, match="needs --link-key PATH"):
+        resolve_link_key(Settings(link="/dev/ttyUSB0", data_dir=tmp_path))
+    assert resolve_link_key(Settings(link="/dev/ttyUSB0", insecure_link=True)) is None
+    with pytest.raises(LinkKeyError, match="contradict"):
+        resolve_link_key(Settings(insecure_link=True, link_key=tmp_path / "k"))
+    with pytest.raises(LinkKeyError, match="No such file"):
+        resolve_link_key(Settings(link="/dev/ttyUSB0", link_key=tmp_path / "missing"))

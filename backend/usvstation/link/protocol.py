@@ -44,7 +44,7 @@ class LinkConfig:
     window: int = 8  # mission items in flight
     max_attempts: int = 10  # per mission message
     command_attempts: int = 5
-    min_timeout_s: float = 0.05
+    min_timeout_s: float = 0.2  # radio, serial driver and scheduling latency
     max_timeout_s: float = 3.0
     link_id: int = 0  # MAVLink signing link id of this station
 
@@ -208,7 +208,8 @@ Event = Any
 
 class RttEstimator:
     """Retry timeout from measured round trips (Jacobson/Karels, RFC 6298 constants),
-    never below two frame airtimes at the baud, never above max_timeout_s."""
+    never below min_timeout_s nor two frame airtimes at the baud, never above
+    max_timeout_s. Round trips count from the frame's departure at the baud."""
 
     def __init__(self, cfg: LinkConfig) -> None:
         self.cfg = cfg
@@ -335,6 +336,14 @@ class MissionUploader:
         self.deadlines[key] = now + self.rtt.timeout + ahead * self.cfg.airtime(ITEM_FRAME_BYTES)
         return [("begin" if key == BEGIN else "end" if key == END else "item", key)]
 
+    def mark(self, key: int, departure: float) -> None:
+        """The frame of `key` leaves the station at `departure` (the line at the baud):
+        its retry deadline and its RTT sample count from then."""
+        if key in self.deadlines:
+            self.deadlines[key] = departure + self.rtt.timeout
+            if self.sent_at.get(key, -INF) > -INF:
+                self.sent_at[key] = departure
+
     def _finish(self, ok: bool, reason: str, now: float) -> None:
         self.deadlines.clear()
         self.result = UploadResult(self.mission.mission_id, ok, reason, self.mission.count,
@@ -382,7 +391,9 @@ class MissionUploader:
             if not ok and ack.result != mav.USV_MISSION_BAD_SEQ:
                 return self._refused(f"item {ack.seq}", ack, now)
             if ack.seq > self.base:
-                self._sample(ack.seq - 1, now)
+                covered = range(self.base, min(ack.seq, self.mission.count))
+                if all(self.sent_at.get(k, -INF) > -INF for k in covered):
+                    self._sample(ack.seq - 1, now)  # Karn: nothing it covers was resent
                 for k in range(self.base, min(ack.seq, self.mission.count)):
                     self.deadlines.pop(k, None)
                 self.base = min(ack.seq, self.mission.count)
@@ -467,6 +478,10 @@ class Readback:
         self.attempts[seq] += 1
         self.deadlines[seq] = now + self.rtt.timeout + ahead * self.cfg.airtime(ACK_FRAME_BYTES)
         return [seq]
+
+    def mark(self, seq: int, departure: float) -> None:
+        if seq in self.deadlines:
+            self.deadlines[seq] = departure + self.rtt.timeout
 
     def start(self, now: float) -> list[int]:
         return self._fill(now)
@@ -612,6 +627,7 @@ class StationProtocol:
         self.clock_offset_s: float | None = None  # boat uptime - station now
         self._out = bytearray()
         self.bytes_sent = self.bytes_received = 0
+        self.tx_free_at = self.now  # when our side of the line (at the baud) is idle
 
     # ---- state
     @property
@@ -746,8 +762,7 @@ class StationProtocol:
             ts1 = int(now * 1e9) & 0x7FFFFFFFFFFFFFFF
             self._timesync_sent = {k: v for k, v in self._timesync_sent.items()
                                    if now - v < 5.0}
-            self._timesync_sent[ts1] = now
-            self._send(self.codec.mav.timesync_encode(0, ts1), now)
+            self._timesync_sent[ts1] = self._send(self.codec.mav.timesync_encode(0, ts1), now)
         if self.upload is not None:
             out, ev = self.upload.poll(now)
             self._queue_upload(out, now)
@@ -809,14 +824,19 @@ class StationProtocol:
             max(0, min(0xFFFF, speed_cms)), max(1, min(0xFFFF, valid_ms))), self.now)
 
     # ---- output
-    def _send(self, msg: Any, now: float) -> None:
-        self._out += self.codec.encode(msg, self._stamp(now))
+    def _send(self, msg: Any, now: float) -> float:
+        """Queue one frame; returns when it will have left at the configured baud."""
+        data = self.codec.encode(msg, self._stamp(now))
+        self._out += data
+        self.tx_free_at = max(self.tx_free_at, now) + self.config.airtime(len(data))
+        return self.tx_free_at
 
     def _send_command(self, seq: int, now: float) -> None:
         p = self.commands.pending[seq]
-        self._send(self.codec.mav.command_int_encode(
+        departure = self._send(self.codec.mav.command_int_encode(
             self.config.boat_id, wire.BOAT_COMPONENT, mav.MAV_FRAME_MISSION, p.code, 0, 0,
             float(seq), float(self.session), 0.0, 0.0, p.x, p.y, 0.0), now)
+        p.deadline = departure + self.rtt.timeout
 
     def _queue_upload(self, out: list[tuple[str, Any]], now: float) -> None:
         up = self.upload
@@ -836,13 +856,13 @@ class StationProtocol:
                 msg = enc.usv_mission_item_encode(b, wire.BOAT_COMPONENT, it.mission_id, it.seq,
                                                   it.lat, it.lon, it.t_ms, it.speed_cms,
                                                   it.course_cdeg, it.heading_cdeg)
-            self._send(msg, now)
+            up.mark({"begin": BEGIN, "end": END}.get(kind, key), self._send(msg, now))
 
     def _queue_reads(self, seqs: list[int], now: float) -> None:
         rb = self.readback
         for seq in seqs:
-            self._send(self.codec.mav.usv_mission_read_encode(
-                self.config.boat_id, wire.BOAT_COMPONENT, rb.mission_id, seq), now)
+            rb.mark(seq, self._send(self.codec.mav.usv_mission_read_encode(
+                self.config.boat_id, wire.BOAT_COMPONENT, rb.mission_id, seq), now))
 
     def data_to_send(self) -> bytes:
         data = bytes(self._out)

@@ -253,7 +253,8 @@ class BoatProtocol:
             return  # for another boat
         self.last_rx = now
         if self.key is not None:
-            ts = max(self.codec.streams.values(), default=0)
+            ts = max((t for (_, sysid, _), t in self.codec.streams.items()
+                      if sysid == self.cfg.station_id), default=0)
             if now >= self.next_persist and ts > self.nv.sign_floor:
                 self.nv.sign_floor = ts
                 self.next_persist = now + PERSIST_PERIOD_S
@@ -288,6 +289,12 @@ class BoatProtocol:
         self.memory[key] = (ack, now)
         self._send(ack, now)
         self._report(now)
+
+    def _on_command_long(self, c: Any, now: float) -> None:
+        """usv-link commands are COMMAND_INT only: anything else is unsupported."""
+        self._send(self.codec.mav.command_ack_encode(
+            c.command, R.MAV_RESULT_UNSUPPORTED, R.USV_COMMAND_REASON_UNKNOWN_COMMAND, 0,
+            self.cfg.station_id, wire.STATION_COMPONENT), now)
 
     def _execute(self, name: str | None, c: Any, now: float) -> tuple[int, int]:
         denied = R.MAV_RESULT_DENIED
@@ -624,6 +631,7 @@ _FROM_STATION = {
     "HEARTBEAT": lambda self, msg, now: None,
     "TIMESYNC": BoatProtocol._on_timesync,
     "COMMAND_INT": BoatProtocol._on_command,
+    "COMMAND_LONG": BoatProtocol._on_command_long,
     "USV_MISSION_BEGIN": BoatProtocol._on_begin,
     "USV_MISSION_ITEM": BoatProtocol._on_item,
     "USV_MISSION_END": BoatProtocol._on_end,
