@@ -1106,6 +1106,11 @@ static void on_byte(usv_boat_t *b, uint8_t c, uint32_t now)
             refuse(b, USV_REFUSE_REPLAY); /* signed before this boot: a replay */
             return;
         }
+        if (b->rx_msg.sysid == b->cfg.station_id &&
+            (b->rx_msg.incompat_flags & MAVLINK_IFLAG_SIGNED) &&
+            signed_timestamp(&b->rx_msg) > b->station_ts) {
+            b->station_ts = signed_timestamp(&b->rx_msg); /* the replay floor to persist */
+        }
         on_frame(b, &b->rx_msg, now);
     } else if (r == MAVLINK_FRAMING_BAD_SIGNATURE) {
         if (!(b->rx_msg.incompat_flags & MAVLINK_IFLAG_SIGNED)) {
@@ -1344,7 +1349,7 @@ void usv_boat_rx_byte(usv_boat_t *b, uint8_t byte)
 
 uint64_t usv_boat_signing_floor(const usv_boat_t *b)
 {
-    return b->signing.timestamp;
+    return b->station_ts;
 }
 
 void usv_boat_set_nav(usv_boat_t *b, const usv_nav_t *nav)

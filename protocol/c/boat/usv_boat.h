@@ -118,6 +118,7 @@ typedef struct {
     mavlink_status_t pack_status; /* scratch for packing: never signs */
     mavlink_signing_t signing;
     mavlink_signing_streams_t streams;
+    uint64_t station_ts;   /* newest signing timestamp accepted from the station */
     mavlink_message_t tx_msg;
     uint8_t tx_buf[MAVLINK_MAX_PACKET_LEN];
     uint8_t tq[USV_TELEMETRY_QUEUE]; /* telemetry waiting for an idle line */
@@ -183,7 +184,8 @@ void usv_boat_set_nav(usv_boat_t *b, const usv_nav_t *nav);
 /* Main loop: parse received bytes, act, send replies first, then due telemetry. */
 void usv_boat_poll(usv_boat_t *b);
 
-/* The newest signing timestamp sent or accepted: persist it (non-volatile memory, at most
+/* The newest signing timestamp accepted from the station (only the station's: the boat's
+ * own run ahead after a floor + 2 s boot): persist it (non-volatile memory, at most
  * once a second) and pass it back plus 2 s (200000) as boot_timestamp after a reboot (or
  * the GPS time if later), so that frames recorded before the reboot stay refused. */
 uint64_t usv_boat_signing_floor(const usv_boat_t *b);
