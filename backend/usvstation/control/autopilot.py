@@ -126,20 +126,32 @@ class Autopilot:
         water = getattr(command, "water_speed", None)
         if water is not None and not math.isfinite(water):
             raise ValueError(f"autopilot: command water_speed must be finite (got {water})")
+        yaw_moment = self._yaw_moment(command.heading, state, dt)
+        surge_force = self._surge_force(command.speed, water, state, dt)
+        alloc = allocate(surge_force, yaw_moment, self.params.thrusters)
+        self._back_off(alloc.surge_force, surge_force, alloc.yaw_moment, yaw_moment)
+        return alloc.command
+
+    def _yaw_moment(self, heading: float, state: VesselState, dt: float) -> float:
+        """Reference model + feed-forward + PID on the heading error (N m)."""
         if self.gains.reference_bandwidth is None:
-            psi_d, r_d, a_d = command.heading, 0.0, 0.0
+            psi_d, r_d, a_d = heading, 0.0, 0.0
         else:
             if self.reference.psi is None:
                 self.reference.reset(state.psi, state.r)
-            psi_d, r_d, a_d = self.reference.update(command.heading, dt)
+            psi_d, r_d, a_d = self.reference.update(heading, dt)
         m66 = float(self.params.mass_matrix[2, 2])
         yaw_ff = m66 * a_d + self.params.linear_damping[2] * r_d
-        yaw_moment = self.heading_pid.update(
+        return self.heading_pid.update(
             angle_diff(psi_d, state.psi), dt, rate=r_d - state.r, feedforward=yaw_ff,
         )
-        feedforward = self.params.surge_drag(command.speed if water is None else water)
-        surge_force = self.speed_pid.update(command.speed - state.u, dt, feedforward=feedforward)
-        alloc = allocate(surge_force, yaw_moment, self.params.thrusters)
-        self.speed_pid.back_off(alloc.surge_force, surge_force)
-        self.heading_pid.back_off(alloc.yaw_moment, yaw_moment)
-        return alloc.command
+
+    def _surge_force(self, speed: float, water: float | None, state: VesselState,
+                     dt: float) -> float:
+        """PI on surge over ground with the drag at the water speed as feed-forward (N)."""
+        feedforward = self.params.surge_drag(speed if water is None else water)
+        return self.speed_pid.update(speed - state.u, dt, feedforward=feedforward)
+
+    def _back_off(self, surge: float, surge_cmd: float, yaw: float, yaw_cmd: float) -> None:
+        self.speed_pid.back_off(surge, surge_cmd)
+        self.heading_pid.back_off(yaw, yaw_cmd)

@@ -27,7 +27,6 @@ from dataclasses import dataclass, replace
 from usvstation.dynamics.environment import Environment, wave_drift_force, wind_force
 from usvstation.dynamics.params import VesselParams
 from usvstation.guidance.angles import angle_diff, wrap_angle
-from usvstation.guidance.observer import DriftObserver
 from usvstation.guidance.los import (
     AVLOSGuidance,
     GuidanceCommand,
@@ -35,6 +34,7 @@ from usvstation.guidance.los import (
     Pose,
     check_pose,
 )
+from usvstation.guidance.observer import DriftObserver
 from usvstation.guidance.trajectory import Schedule, Trajectory
 
 

@@ -102,7 +102,8 @@ class DriftObserver:
                                      + self.estimate[1] * math.sin(meas.psi))
         self._started = True
 
-    def update(self, meas: Measurement, thrust: tuple[float, float], dt: float) -> tuple[float, float]:
+    def update(self, meas: Measurement, thrust: tuple[float, float],
+               dt: float) -> tuple[float, float]:
         """Advance dt seconds with the fix `meas` and the thrust commanded over the last dt."""
         if not dt > 0.0:
             raise ValueError(f"observer: dt must be > 0 (got {dt})")
