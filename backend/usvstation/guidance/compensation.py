@@ -177,6 +177,9 @@ class EstimatedDrift(DriftModel):
         return self.observer.estimate
 
 
+COURSE_GAIN = 1.0  # course error (bearing to goal - COG) added to the compensated heading
+
+
 class CompensatedAVLOS(AVLOSGuidance):
     """AV-LOS with the disturbance compensation of paper 000 sec. 3.1 and a crab-limited arrival.
 
@@ -195,7 +198,7 @@ class CompensatedAVLOS(AVLOSGuidance):
     def __init__(self, trajectory: Trajectory, predictor: DriftModel,
                  lookahead: float = 3.0, speed_max: float = 3.0, speed_min: float = 0.0,
                  accel: float | None = None, arrival_tolerance: float = math.radians(5.0),
-                 approach_length: float = 12.0, approach_crab: float = 0.5,
+                 approach_length: float = 12.0, approach_crab: float = 0.3,
                  overrun: float = 0.0, arrive_radius: float = 0.5,
                  decide_at: float | None = None,
                  path_check: Callable[[Trajectory], bool] | None = None) -> None:
@@ -250,6 +253,7 @@ class CompensatedAVLOS(AVLOSGuidance):
         if self.finished:
             return self._command(la, heading, speed, t_la)
         approach = self.approach_segment is not None and self._on_approach(pose)
+        along = 0.0
         if approach:
             gx, gy = self.goal
             along = (gx - pose.x) * math.cos(self.arrival_heading) + (
@@ -258,6 +262,12 @@ class CompensatedAVLOS(AVLOSGuidance):
                 heading = math.atan2(gy - pose.y, gx - pose.x)
         sol = self.predictor.solve(speed * math.cos(heading), speed * math.sin(heading), pose.psi)
         psi = sol.heading
+        cog, sog = getattr(pose, "cog", None), getattr(pose, "sog", 0.0)
+        if approach and cog is not None and sog > 0.5 and along > 1.0:
+            # Course feedback on the measured COG on top of the compensation:
+            # point the track made good at the goal, whatever error the drift
+            # estimate still has.
+            psi = wrap_angle(psi + COURSE_GAIN * angle_diff(heading, cog))
         if approach:
             limit = 0.9 * self.arrival_tolerance
             off = angle_diff(psi, self.arrival_heading)

@@ -15,7 +15,10 @@ drag) to know its speed through the water u_r, and low-passes the residual
 
 Sway through the water is taken as zero: steady crab is what the
 compensation must undo anyway, so it belongs in the estimate; the
-transient sway of a turn is filtered by T_c (10 s by default). The
+transient sway of a turn is filtered by T_c (10 s by default) and the
+update is weighted by exp(-(r_p / r_0)^2) (r_0 = 3 deg/s, r_p the yaw
+rate peak-held with a 3 s decay, as the slip outlasts the turn), so the
+estimate holds through a turn instead of learning its slip. The
 estimate is only as good as the nominal surge model; the simulator uses
 the same hull as the observer, so the figures of `bench tracking` carry no
 model mismatch (docs/tracking.md).
@@ -27,6 +30,8 @@ import math
 from dataclasses import dataclass
 
 from usvstation.dynamics.params import VesselParams
+
+TURN_MEMORY = 3.0  # s, decay of the peak-held yaw rate that gates the update
 
 
 @dataclass(frozen=True)
@@ -77,16 +82,19 @@ class Measurement:
 class DriftObserver:
     """Online estimate of the drift velocity (current + steady crab) from a boat's own sensors."""
 
-    def __init__(self, params: VesselParams, time_constant: float = 10.0,
-                 initial: tuple[float, float] = (0.0, 0.0)) -> None:
+    def __init__(self, params: VesselParams, time_constant: float = 5.0,
+                 initial: tuple[float, float] = (0.0, 0.0),
+                 turn_rate: float = math.radians(3.0)) -> None:
         if not time_constant > 0.0:
             raise ValueError(f"observer: time_constant must be > 0 (got {time_constant})")
         self.params = params
         self.time_constant = time_constant
+        self.turn_rate = turn_rate
         self.estimate = (float(initial[0]), float(initial[1]))
         self.water_speed = 0.0  # estimated surge speed through the water (m/s)
         self._shaft = [0.0, 0.0]  # nominal shaft speeds of the propeller model (rad/s)
         self._started = False
+        self._turn = 0.0  # peak-held yaw rate (rad/s), decaying over TURN_MEMORY
 
     @property
     def speed(self) -> float:
@@ -125,7 +133,11 @@ class DriftObserver:
         vx, vy = meas.velocity
         raw_x = vx - self.water_speed * math.cos(meas.psi)
         raw_y = vy - self.water_speed * math.sin(meas.psi)
-        w = 1.0 - math.exp(-dt / self.time_constant)
+        # Turning: the hull slips sideways through the water (not drift); trust
+        # the residual less the faster the boat turns.
+        self._turn = max(abs(meas.r), self._turn * math.exp(-dt / TURN_MEMORY))
+        trust = math.exp(-((self._turn / self.turn_rate) ** 2))
+        w = trust * (1.0 - math.exp(-dt / self.time_constant))
         cx, cy = self.estimate
         self.estimate = (cx + w * (raw_x - cx), cy + w * (raw_y - cy))
         return self.estimate
