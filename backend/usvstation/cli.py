@@ -124,6 +124,8 @@ def build_parser() -> argparse.ArgumentParser:
                        help="random scenarios for the validity rate (default 100, 0 to skip)")
     bench.add_argument("--quick", action="store_true",
                        help="fewer repetitions, for a smoke test (figures not for the record)")
+    bench.add_argument("--manoeuvres", action="store_true",
+                       help="tracking: add turning circle, zig-zags, pull-out and heading steps")
     bench.add_argument("--markdown", type=Path, metavar="JSON",
                        help="print the tables for RESULTS.md from a saved --json result")
     return parser
@@ -255,7 +257,8 @@ def _cmd_bench(args: argparse.Namespace) -> int:
     if args.name == "tracking":
         from usvstation.bench.tracking import run_tracking_bench
 
-        result = run_tracking_bench(progress=lambda msg: print(msg, file=sys.stderr, flush=True))
+        result = run_tracking_bench(progress=lambda msg: print(msg, file=sys.stderr, flush=True),
+                                    with_manoeuvres=args.manoeuvres)
         print(json.dumps(result, indent=2))
         return EXIT_OK
     from usvstation.bench.planner import render_markdown, run_planner_bench

@@ -6,13 +6,19 @@ rate loop turns r_c into a yaw moment (m66 k_r (r_c - r) + d_r r_c).
 `HeadingPI` keeps K_p, K_i fixed; `DRNNPI` has a diagonal recurrent network
 choose them each step:
 
-    h = relu(W1 x + w_r * h_prev + b1),   [K_p, K_i] = scale * softplus(W2 h + b2)
+    h = relu(W1 x + w_r * h_prev + b1),   [K_p, K_i] = 2 scale * sigmoid(W2 h + b2)
 
 with x = (psi_d, psi, r) / (pi, pi, rate_max) (the paper's three inputs),
 4 hidden units, 2 outputs (Table 4), learnt online by RMSProp (learning rate
 0.01, momentum 0.1, Table 4) on L = e^2 / 2 one step later, through the
 plant sensitivity de/dr_c = -dt (PROPOSED; the paper does not say how its
-Jacobian is obtained). Deviation from the paper, documented: the initial
+Jacobian is obtained). Weights are bounded to +/-5 and the recurrence to
++/-0.9 (online RMSProp moves each weight by about the learning rate per
+step, 20 steps a second, so an unbounded network diverges within minutes);
+the output layer is a sigmoid giving gains within (0, 2x) the PI's, where
+the paper's ReLU output is unbounded (with it the gains ran away and the
+boat circled); no learning step is taken while r_c is saturated (the
+sensitivity is zero there). Deviation from the paper, documented: the initial
 weights are seeded small random numbers (N(0, 0.1^2)), not all ones; with
 all-ones every hidden unit is the same forever. The speed loop is the
 Autopilot's.
@@ -34,6 +40,8 @@ LEARNING_RATE = 0.01
 MOMENTUM = 0.1
 RMS_DECAY = 0.9
 INTEGRAL_ZONE = math.radians(10.0)  # integral separation (eq. 23 anti-windup)
+WEIGHT_LIMIT = 5.0  # |w| bound on every weight (RMSProp steps are ~ the learning rate each)
+RECURRENCE_LIMIT = 0.9
 
 
 class HeadingPI(Autopilot):
@@ -72,8 +80,8 @@ class HeadingPI(Autopilot):
         self.speed_pid.back_off(surge, surge_cmd)
 
 
-def _softplus(z: np.ndarray) -> np.ndarray:
-    return np.log1p(np.exp(-np.abs(z))) + np.maximum(z, 0.0)
+def _sigmoid(z: np.ndarray) -> np.ndarray:
+    return 0.5 * (1.0 + np.tanh(0.5 * z))
 
 
 class DRNNPI(HeadingPI):
@@ -105,12 +113,15 @@ class DRNNPI(HeadingPI):
         """One RMSProp step on L = e^2/2 for the gains chosen one step ago."""
         if self._pending is None:
             return
-        x, h_prev, pre1, h, z2, e_prev, integral = self._pending
+        x, h_prev, pre1, h, z2, e_prev, integral, saturated = self._pending
+        if saturated:
+            return
         p = self.params_nn
         # dL/dr_c = e * de/dr_c = -e dt; dr_c/dK = (e_prev, integral).
         d_rc = -e_now * dt
-        sig = 1.0 / (1.0 + np.exp(-z2))  # softplus'
-        d_z2 = np.array([d_rc * e_prev * self.kp_scale, d_rc * integral * self.ki_scale]) * sig
+        sig = _sigmoid(z2)
+        d_z2 = np.array([d_rc * e_prev * self.kp_scale, d_rc * integral * self.ki_scale]) * (
+            2.0 * sig * (1.0 - sig))
         grads = {"W2": np.outer(d_z2, h), "b2": d_z2}
         d_h = p["W2"].T @ d_z2
         d_pre = d_h * (pre1 > 0.0)
@@ -119,7 +130,9 @@ class DRNNPI(HeadingPI):
             self._ms[k] = RMS_DECAY * self._ms[k] + (1.0 - RMS_DECAY) * g * g
             step = LEARNING_RATE * g / (np.sqrt(self._ms[k]) + 1e-8)
             self._mom[k] = MOMENTUM * self._mom[k] + step
-            p[k] = p[k] - self._mom[k]
+            p[k] = np.clip(p[k] - self._mom[k], -WEIGHT_LIMIT, WEIGHT_LIMIT)
+        # A diagonal recurrence below 1 keeps the hidden state bounded.
+        p["wr"] = np.clip(p["wr"], -RECURRENCE_LIMIT, RECURRENCE_LIMIT)
 
     def _pi_gains(self, heading: float, state: VesselState, e: float, dt: float
                   ) -> tuple[float, float]:
@@ -130,9 +143,11 @@ class DRNNPI(HeadingPI):
         pre1 = p["W1"] @ x + p["wr"] * h_prev + p["b1"]
         h = np.maximum(pre1, 0.0)
         z2 = p["W2"] @ h + p["b2"]
-        out = _softplus(z2)
+        out = 2.0 * _sigmoid(z2)
         kp, ki = float(self.kp_scale * out[0]), float(self.ki_scale * out[1])
         self.hidden = h
-        self._pending = (x, h_prev, pre1, h, z2, e, self.heading_integral)
+        rc = kp * e + ki * self.heading_integral
+        self._pending = (x, h_prev, pre1, h, z2, e, self.heading_integral,
+                         abs(rc) >= self.gains.rate_max)
         self.gains_history.append((kp, ki))
         return kp, ki
