@@ -72,7 +72,8 @@ class DriftModel:
 
         With drift c and wanted direction d, the water velocity is w = s d - c.
         When |w| would exceed `water_speed_max` U the boat keeps the line and
-        slows along it: s = c.d + sqrt(U^2 - (c x d)^2). A cross drift above
+        slows along it: s = c.d + sqrt(U^2 - (c x d)^2) (or, carried along
+        faster than asked, makes good c.d - sqrt(...)). A cross drift above
         U cannot be held: the boat then heads straight into it.
         """
         for value, name in ((vx, "vx"), (vy, "vy"), (psi_guess, "psi")):
@@ -99,9 +100,11 @@ class DriftModel:
                         1.0, cross)
                     psi = math.atan2(wy, wx)
                     continue
-                s_max = along + math.sqrt(cap * cap - cross * cross)
-                if s > s_max:
-                    s, limited = s_max, True
+                reach = math.sqrt(cap * cap - cross * cross)
+                if s > along + reach:  # cannot make it good: slow along the line
+                    s, limited = along + reach, True
+                elif s < along - reach:  # carried along faster than asked: brake
+                    s, limited = along - reach, True
             wx, wy = s * ux - cx, s * uy - cy
             if math.hypot(wx, wy) < 0.05:
                 break
