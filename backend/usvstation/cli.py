@@ -111,6 +111,11 @@ def build_parser() -> argparse.ArgumentParser:
                      "the mission exactly")
     sim.add_argument("--sea-state", type=int, default=0, choices=range(0, 7), metavar="0-6",
                      help="waves of this sea state running with the scenario's wind (default 0)")
+    sim.add_argument("--guidance", default="avlos_comp",
+                     choices=["avlos_comp", "avlos", "los", "ilos", "alos", "sliding_curve"],
+                     help="dynamic vehicle's guidance law (default avlos_comp)")
+    sim.add_argument("--controller", default="pid", choices=["pid", "pid_mrac", "drnn_pi", "pi"],
+                     help="dynamic vehicle's autopilot (default pid)")
     sim.add_argument("--duration", type=float, default=None,
                      help="stop after this many seconds (default: run until interrupted)")
 

@@ -16,9 +16,10 @@ drag) to know its speed through the water u_r, and low-passes the residual
 Sway through the water is taken as zero: steady crab is what the
 compensation must undo anyway, so it belongs in the estimate; the
 transient sway of a turn is filtered by T_c (10 s by default) and the
-update is weighted by exp(-(r_p / r_0)^2) (r_0 = 3 deg/s, r_p the yaw
-rate peak-held with a 3 s decay, as the slip outlasts the turn), so the
-estimate holds through a turn instead of learning its slip. The
+update is weighted by exp(-(r_p / r_0 min(SOG / 1.5 m/s, 1))^2) (r_0 =
+3 deg/s, r_p the yaw rate peak-held with a 3 s decay, as the slip outlasts
+the turn), so the estimate holds through a turn at speed instead of
+learning its slip, and keeps learning at station-keeping speeds. The
 estimate is only as good as the nominal surge model; the simulator uses
 the same hull as the observer, so the figures of `bench tracking` carry no
 model mismatch (docs/tracking.md).
@@ -32,6 +33,7 @@ from dataclasses import dataclass
 from usvstation.dynamics.params import VesselParams
 
 TURN_MEMORY = 3.0  # s, decay of the peak-held yaw rate that gates the update
+SLIP_SPEED = 1.5  # m/s, speed over ground from which a turn's slip gates fully
 
 
 @dataclass(frozen=True)
@@ -136,7 +138,10 @@ class DriftObserver:
         # Turning: the hull slips sideways through the water (not drift); trust
         # the residual less the faster the boat turns.
         self._turn = max(abs(meas.r), self._turn * math.exp(-dt / TURN_MEMORY))
-        trust = math.exp(-((self._turn / self.turn_rate) ** 2))
+        # The slip of a turn grows with speed: at station-keeping speeds the
+        # observer keeps learning while the boat turns.
+        slip = self._turn / self.turn_rate * min(meas.sog / SLIP_SPEED, 1.0)
+        trust = math.exp(-(slip**2))
         w = trust * (1.0 - math.exp(-dt / self.time_constant))
         cx, cy = self.estimate
         self.estimate = (cx + w * (raw_x - cx), cy + w * (raw_y - cy))

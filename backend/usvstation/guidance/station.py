@@ -7,10 +7,12 @@ asks for a ground velocity back to the hold point,
     v_d = sat(k (p_hold - p), v_max),
 
 and turns it into a heading and speed through the water with the drift
-estimate (`EstimatedDrift.solve`): in a current the boat weathervanes into
-it and runs through the water at the current's speed while making good
-v_d over ground. Close to the point in slack water (|w| < `idle_speed`) it
-keeps its heading and stops its propellers.
+estimate. In a current (estimate above `weathervane_current`) the boat
+weathervanes: its bow stays within `max_offset` (60 deg) of straight into
+the current and its water speed along that heading (astern if need be) is
+the projection of v_d - c, so it never swings round through a full turn
+near the point. In slack water it goes for the point (`EstimatedDrift.solve`)
+and, close to it, keeps its heading and stops its propellers.
 
 `over_capacity` is true when the estimated drift needs more than
 `capacity` x the top speed through the water: the boat then cannot hold
@@ -22,6 +24,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from usvstation.guidance.angles import angle_diff, wrap_angle
 from usvstation.guidance.compensation import EstimatedDrift
 from usvstation.guidance.los import GuidanceCommand, Pose, check_pose
 
@@ -39,8 +42,10 @@ class StationCommand:
 class StationKeeper:
     """Hold a point with the drift estimate: position loop -> compensation -> autopilot."""
 
-    def __init__(self, drift: EstimatedDrift, gain: float = 0.25, speed_max: float = 0.8,
-                 idle_speed: float = 0.15, capacity: float = 0.9) -> None:
+    def __init__(self, drift: EstimatedDrift, gain: float = 0.2, speed_max: float = 0.5,
+                 idle_speed: float = 0.15, capacity: float = 0.9,
+                 weathervane_current: float = 0.15,
+                 max_offset: float = math.radians(60.0)) -> None:
         if not gain > 0.0 or not speed_max > 0.0:
             raise ValueError("station keeping: gain and speed_max must be > 0")
         self.drift = drift
@@ -48,6 +53,8 @@ class StationKeeper:
         self.speed_max = speed_max
         self.idle_speed = idle_speed
         self.capacity = capacity
+        self.weathervane_current = weathervane_current
+        self.max_offset = max_offset
         self.point: tuple[float, float] | None = None
 
     def hold_at(self, x: float, y: float) -> None:
@@ -68,10 +75,24 @@ class StationKeeper:
         dist = math.hypot(dx, dy)
         speed = min(self.gain * dist, self.speed_max)
         vx, vy = (speed * dx / dist, speed * dy / dist) if dist > 1e-9 else (0.0, 0.0)
-        sol = self.drift.solve(vx, vy, pose.psi)
-        if sol.water_speed < self.idle_speed and math.hypot(vx, vy) < self.idle_speed:
-            return StationCommand(pose.psi, 0.0, None, True)
-        return StationCommand(sol.heading, sol.surge, sol.water_speed, False)
+        cx, cy = self.drift.observer.estimate
+        if math.hypot(cx, cy) < self.weathervane_current:
+            sol = self.drift.solve(vx, vy, pose.psi)
+            if sol.water_speed < self.idle_speed and math.hypot(vx, vy) < self.idle_speed:
+                return StationCommand(pose.psi, 0.0, None, True)
+            return StationCommand(sol.heading, sol.surge, sol.water_speed, False)
+        # Weathervane: the bow stays within `max_offset` of straight into the
+        # current, and the water speed along it (astern if need be) makes the
+        # best of the wanted ground velocity.
+        wx, wy = vx - cx, vy - cy
+        into = math.atan2(-cy, -cx)
+        want = math.atan2(wy, wx)
+        off = angle_diff(want, into)
+        psi = wrap_angle(into + min(max(off, -self.max_offset), self.max_offset))
+        c, s = math.cos(psi), math.sin(psi)
+        water = wx * c + wy * s
+        surge = water + cx * c + cy * s
+        return StationCommand(psi, surge, water, False)
 
     def command(self, pose: Pose, t: float) -> GuidanceCommand:
         """The same as a GuidanceCommand (for a TrackingLoop); `finished` is never set."""

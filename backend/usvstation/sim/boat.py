@@ -152,6 +152,7 @@ class BoatProtocol:
         self.next_telemetry = now
         self.next_heartbeat = now
         self.guidance_until = -math.inf
+        self.last_notice: str | None = None
         self.next_mismatch_text = now
         self.recent_commands: OrderedDict[int, m.CommandAck] = OrderedDict()
         self.log: list[str] = []  # status texts and events, for the runner to print
@@ -342,6 +343,11 @@ class BoatProtocol:
         dt_link = max(0.0, now - self.last_now)
         self.last_now = now
         self._advance_vehicle(dt_link * self.cfg.sim_speed)
+        notice = getattr(self.vehicle, "notice", None)  # e.g. current beyond what HOLD can hold
+        if notice != self.last_notice:
+            self.last_notice = notice
+            if notice:
+                self._text(m.Severity.WARNING, notice[:m.STATUS_TEXT_MAX])
         if self.mode == m.Mode.GUIDED and now >= self.guidance_until:
             self.vehicle.clear_guidance()
             self.mode = m.Mode.AUTO if self.state == m.State.RUNNING else m.Mode.STANDBY

@@ -31,7 +31,8 @@ async def run_sim(args: argparse.Namespace) -> int:
     frame = RampFrame(origin.lat, origin.lon, origin.ramp_bearing_deg)
     config = BoatConfig(telemetry_hz=args.telemetry_hz, failsafe_timeout_s=args.failsafe_s,
                         sim_speed=args.sim_speed)
-    vehicle = make_vehicle(args.vehicle, scenario, args.sea_state)
+    vehicle = make_vehicle(args.vehicle, scenario, args.sea_state,
+                           guidance=args.guidance, controller=args.controller)
     boat = make_boat(frame, config=config, seed=args.seed, vehicle=vehicle)
     stop = asyncio.Event()
     if args.duration is not None:
