@@ -301,7 +301,7 @@ def test_compensated_approach_comes_in_from_up_current_to_the_goal() -> None:
     assert via[0] == pytest.approx(8.0, abs=0.2)
     assert via[1] < -0.1  # up-current
     assert g.trajectory.points[-1] == pytest.approx([0.0, 0.0])
-    assert math.degrees(abs(g.approach_crab)) == pytest.approx(2.5)
+    assert math.degrees(abs(g.approach_crab)) == pytest.approx(1.5)  # 0.3 x the 5 deg tolerance
     near = g.update(VesselState(3.0, -0.3, math.pi, 3.0), 19.0)
     assert abs(math.degrees(angle_diff(near.heading, math.pi))) <= 4.5 + 1e-9
     calm = CompensatedAVLOS(traj, DisturbancePredictor(otter(), Environment()), 8.0)
