@@ -97,6 +97,8 @@ def test_bench_tracking_prints_one_json_object_meeting_the_issue(capsys) -> None
     assert result["disturbed_conditions"]["sea_state"] == 3
     assert math.isfinite(result["elapsed_s"]["disturbed"])
     assert len(result["disturbed_quartering_seas"]) == 4 * len(METHODS)
+    for row in result["disturbed_noisy_sensors"]["rows"]:  # RTK-class GNSS, 0.5 deg compass
+        assert abs(row["arrival_offset_m"]) <= 0.3 and abs(row["arrival_heading_err_deg"]) <= 5.0
     keeping = {r["current_mps"]: r for r in result["station_keeping"]}
     for current in (0.5, 1.0):
         assert keeping[current]["radius_m"] <= 2.0 and keeping[current]["hold_s"] >= 180.0

@@ -252,3 +252,17 @@ def test_a_beam_current_near_top_speed_slows_the_boat_on_its_line() -> None:
     assert g.finished  # it still gets there, at the ground speed it can make
     assert worst_late < 5.0
     assert math.hypot(obs.estimate[0], obs.estimate[1] - 2.5) < 0.15
+
+
+def test_nav_sensors_are_seeded_and_noisy_as_stated() -> None:
+    from usvstation.sim.sensors import NavSensors
+
+    state = VesselState(10.0, 5.0, 1.0, 2.0, 0.1, 0.05, 3.0)
+    a = [NavSensors(seed=1)(state) for _ in range(1)]
+    assert a == [NavSensors(seed=1)(state)]
+    sensors = NavSensors(seed=2)
+    fixes = [sensors(state) for _ in range(4000)]
+    xs = [f.x - 10.0 for f in fixes]
+    assert abs(sum(xs) / len(xs)) < 0.005
+    assert (sum(x * x for x in xs) / len(xs)) ** 0.5 == pytest.approx(0.05, rel=0.1)
+    assert all(f.r == 0.05 and f.t == 3.0 for f in fixes)

@@ -294,14 +294,19 @@ def _path_check(scenario: Any) -> Callable[[Trajectory], bool] | None:
 
 
 def track_plan(plan: dict[str, Any], method: str, params: VesselParams, env: Environment,
-               setup: DisturbedSetup, scenario: Any = None) -> dict[str, Any]:
-    """Fly one plan with one method; deviation over the plan and the arrival at x = 0."""
+               setup: DisturbedSetup, scenario: Any = None,
+               sensors: Callable[[VesselState], Measurement] | None = None) -> dict[str, Any]:
+    """Fly one plan with one method; deviation over the plan and the arrival at x = 0.
+
+    `sensors` (default exact readings) turns the simulator's state into what
+    the guidance sees, e.g. sim.sensors.NavSensors.
+    """
     traj = Trajectory.from_plan(plan)
     vessel = start_state(plan, params, env)
     observer = DriftObserver(params)
     guide = make_guidance(method, traj, params, env, setup, observer, _path_check(scenario))
     loop = TrackingLoop(vessel, guide, Autopilot(params), setup.guidance_period,
-                        setup.control_period, observer=observer)
+                        setup.control_period, observer=observer, sensors=sensors)
     every = round(setup.guidance_period / setup.control_period)
     devs: list[float] = []
     crossing: tuple[float, float, float] | None = None
@@ -372,7 +377,8 @@ def scenario_for_vessel(scenario: Any, params: VesselParams,
 
 def disturbed(setup: DisturbedSetup | None = None, scenarios: tuple[str, ...] = PUBLIC_SCENARIOS,
               methods: tuple[str, ...] = METHODS, params: VesselParams | None = None,
-              progress: Callable[[str], None] | None = None) -> list[dict[str, Any]]:
+              progress: Callable[[str], None] | None = None,
+              sensor_seed: int | None = None) -> list[dict[str, Any]]:
     """One row per (scenario, method): {scenario, method, current_source, deviations, arrival}."""
     from usvstation.planning.plan import plan_scenario
     from usvstation.scenario import load_scenario
@@ -387,8 +393,13 @@ def disturbed(setup: DisturbedSetup | None = None, scenarios: tuple[str, ...] = 
         for method in methods:
             if progress:
                 progress(f"tracking {name} with {method}")
+            sensors = None
+            if sensor_seed is not None:
+                from usvstation.sim.sensors import NavSensors
+
+                sensors = NavSensors(seed=sensor_seed)
             rows.append({"scenario": name, "method": method,
-                         **track_plan(plan, method, vessel, env, s, scenario)})
+                         **track_plan(plan, method, vessel, env, s, scenario, sensors)})
     return rows
 
 
@@ -743,6 +754,7 @@ def run_tracking_bench(progress: Callable[[str], None] | None = None,
     quartering = DisturbedSetup(wave_dir=QUARTERING_WAVE_DIR)
     rows_quartering = disturbed(quartering, progress=progress)
     untuned = untuned_arrivals(progress=progress)
+    noisy = disturbed(setup, methods=("avlos_comp",), progress=progress, sensor_seed=7)
     t2 = time.perf_counter()
     if progress:
         progress("station keeping")
@@ -761,6 +773,11 @@ def run_tracking_bench(progress: Callable[[str], None] | None = None,
         "disturbed": rows,
         "disturbed_quartering_seas": rows_quartering,
         "disturbed_untuned_plan_seeds": untuned,
+        "disturbed_noisy_sensors": {
+            "sensors": "GNSS fix 0.05 m and velocity 0.05 m/s white per axis (RTK class), "
+                       "compass 0.5 deg white, seed 7 (sim.sensors.NavSensors)",
+            "rows": noisy,
+        },
         "disturbed_conditions": {
             "vessel": vessel.name,
             "vessel_top_speed_mps": round(vessel.top_speed, 3),
