@@ -133,3 +133,18 @@ def test_guided_mode_and_abort(mission):
     assert v.state.thrust_left == 0.0 and v.state.thrust_right == 0.0
     v.start()  # nothing to start after an abort
     assert v.phase == "aborted"
+
+
+def test_the_boat_tells_the_station_when_the_current_is_beyond_hold():
+    from usvstation.geo import RampFrame
+    from usvstation.sim.boat import BoatProtocol
+    from usvstation.sim.runner import make_boat
+
+    env = Environment.with_current(3.5, math.pi / 2)
+    vehicle = DynamicVehicle(40.0, 0.0, math.pi, env=env)
+    boat: BoatProtocol = make_boat(RampFrame(30.5, 114.4, 90.0), vehicle=vehicle)
+    now = boat.last_now
+    for k in range(1, 300):  # 60 s of boat time, on the boat's own clock
+        boat.update(now + 0.2 * k)
+    warnings = [line for line in boat.log if "current exceeds what the boat can hold" in line]
+    assert warnings == ["WARNING: current exceeds what the boat can hold: drifting"]
