@@ -50,9 +50,13 @@ def test_after_hold_the_boat_stays_within_3_m_for_60_s_in_half_a_metre_per_secon
         _wait_boat_time(c, run, t0 + 8.0, 60)  # under way on the plan
         ack = c.post("/api/boat/command", json={"command": "hold"}).json()
         assert ack["result"] == "ACCEPTED" and ack["state"] == "HOLD"
-        at_hold = _telemetry(c, run)[-1]
+        seen = _telemetry(c, run)[-1]["boat_time"]
+        rows = _wait_boat_time(c, run, seen + 5.0, 60)
+        # the first fix the boat reports in HOLD: where it was told to hold (within 0.2 s)
+        at_hold = next(x for x in rows if x["mode"] == "HOLD")
         t_hold = at_hold["boat_time"]
         rows = _wait_boat_time(c, run, t_hold + 30.0 + 60.0, 120)
+        assert all(x["mode"] == "HOLD" for x in rows if x["boat_time"] >= t_hold)
         window = [x for x in rows if t_hold + 30.0 <= x["boat_time"] <= t_hold + 90.0]
         assert window[-1]["boat_time"] - window[0]["boat_time"] >= 59.5
         # Telemetry positions carry the simulated GNSS error (0.8 m wandering bias, 0.4 m
