@@ -1,21 +1,25 @@
 """Disturbance compensation for AV-LOS (paper 000 sec. 3.1 and 3.3).
 
 The paper feeds the predicted current and wave effect into AV-LOS. Here the
-prediction is the drift velocity the environment gives the hull: the current
-itself (it acts through the relative velocity) plus the steady sway the wave
-drift force (eq. 3-5) and the wind force (paper 002 eq. 24) push it to
-against the hull's own sway damping. AV-LOS asks for a velocity over ground;
-the compensated heading is the one whose water velocity plus that drift
-points the right way, and the speed command is the wanted ground velocity's
-component along that heading.
+prediction is a drift velocity: on a boat, the online estimate of
+`DriftObserver` (`EstimatedDrift`: current plus steady crab, from the
+boat's own sensors); for comparison only, `DisturbancePredictor` computes it
+from the simulator's environment (the current, which acts through the
+relative velocity, plus the steady sway the wave drift force, eq. 3-5, and
+the wind force, paper 002 eq. 24, push the hull to against its own sway
+damping). AV-LOS asks for a velocity over ground; the compensated heading is
+the one whose water velocity plus the drift points the right way, the speed
+command is the wanted ground velocity's component along that heading, and
+the speed through the water goes to the autopilot as drag feed-forward.
 
-Arrival: holding a line across a current needs a crab angle (at 3 m/s a
-0.3 m/s cross current alone needs 5.7 deg), but the ramp wants the hull
-aligned. So the last `approach_length` metres are bent: the boat comes in on
-a line through the goal, from up-current, along which the crab it needs is
-half the tolerance, and there its heading command is held within the
-tolerance of the arrival heading; the drift then carries it onto the axis at
-the goal.
+Arrival: holding a line across a current needs a crab angle (at 2.4 m/s a
+0.3 m/s cross current needs 7 deg), but the ramp wants the hull aligned. So
+near the end the last `approach_length` metres are bent once, with the drift
+known then: the boat comes in on a line through the goal, from up-current,
+along which the crab it needs is a fraction of the tolerance; there it
+steers for the goal with feedback on its measured course over ground, and
+its heading command is held within the tolerance of the arrival heading;
+the drift then carries it onto the axis at the goal.
 """
 
 from __future__ import annotations
