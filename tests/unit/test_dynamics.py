@@ -268,3 +268,16 @@ def test_kinematic_boat_takes_the_heading_and_ramps_its_speed() -> None:
     assert boat.speed == pytest.approx(1.0)
     boat.step(0.0, -3.0, 0.2)  # no going astern
     assert boat.speed == pytest.approx(0.6)
+
+
+def test_a_push_acts_only_inside_its_area() -> None:
+    """Paper 004's forces: a constant earth-frame push inside a rectangle (Table 7)."""
+    from usvstation.dynamics import Push
+
+    env = Environment(pushes=(Push(0.0, 15.0, -10.0, 10.0, -10.0, 10.0),))
+    inside = run(Vessel(OTTER, VesselState(0.0, 0.0, 0.0)), ThrustCommand(0.0, 0.0), env, 2.0)
+    outside = run(Vessel(OTTER, VesselState(50.0, 0.0, 0.0)), ThrustCommand(0.0, 0.0), env, 2.0)
+    assert inside.velocity[1] > 0.05 and abs(inside.velocity[0]) < 0.01
+    assert outside.velocity == (0.0, 0.0)
+    with pytest.raises(ValueError, match="push: need x_min < x_max"):
+        Push(1.0, 0.0, 5.0, -5.0)

@@ -34,7 +34,7 @@ import numpy as np
 from usvstation.control.autopilot import Autopilot
 from usvstation.control.loop import TrackingLoop
 from usvstation.control.select import make_controller
-from usvstation.dynamics.environment import Environment, WaveField, Wind
+from usvstation.dynamics.environment import Environment, Push, WaveField, Wind
 from usvstation.dynamics.kinematic import KinematicBoat
 from usvstation.dynamics.params import VesselParams, otter, trimaran
 from usvstation.dynamics.vessel import ThrustCommand, Vessel, VesselState
@@ -592,7 +592,10 @@ def controllers(progress: Callable[[str], None] | None = None) -> dict[str, Any]
         rows002.append({**_fly(PAPER002_ROUTE, tri, name, env002, 2.5, "sliding_curve", 12.0),
                         "paper_rms_xte_m": PAPER002_RMS_XTE_M})
     ott = otter()
-    env004 = Environment.with_current(0.2, math.pi / 2, wind=Wind(5.0, math.pi / 2))
+    # Table 7: 1 N of wind along +Y everywhere, 15 N of waves inside an area
+    # (its place and direction are not published: here across the route's middle,
+    # also towards +Y).
+    env004 = Environment(pushes=(Push(0.0, 1.0), Push(0.0, 15.0, -150.0, 150.0, -300.0, 300.0)))
     rows004 = []
     for name in ("pi", "drnn_pi", "pid"):
         if progress:
@@ -614,8 +617,9 @@ def controllers(progress: Callable[[str], None] | None = None) -> dict[str, Any]
         "paper004": {
             "vessel": "otter", "guidance": "LOS, R = 8 m", "route": PAPER004_ROUTE,
             "speed_mps": 2.5,
-            "disturbance": "current 0.2 m/s and wind 5 m/s towards +y (paper: 1 N wind along +Y, "
-                           "15 N waves in an unpublished area)",
+            "disturbance": "paper 004 Table 7 as forces: 1 N (wind) towards +y everywhere, "
+                           "15 N (waves) towards +y for -150 <= x <= 150, -300 <= y <= 300 m "
+                           "(area and wave direction not published)",
             "drnn_to_pi": ratios, "paper_drnn_to_pi": PAPER004_RATIOS,
             "drnn_init": "seeded N(0, 0.1^2) weights (seed 1), not the paper's all-ones",
         },

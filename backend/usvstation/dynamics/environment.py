@@ -115,12 +115,39 @@ class Wind:
 
 
 @dataclass(frozen=True)
+class Push:
+    """A constant earth-frame force (N) on the hull inside a rectangle of the plane.
+
+    For disturbances papers give as forces (paper 004 Table 7: 1 N of wind,
+    15 N of waves in an area). Bounds default to the whole plane.
+    """
+
+    fx: float
+    fy: float
+    x_min: float = -math.inf
+    x_max: float = math.inf
+    y_min: float = -math.inf
+    y_max: float = math.inf
+
+    def __post_init__(self) -> None:
+        if not (math.isfinite(self.fx) and math.isfinite(self.fy)):
+            raise ValueError(f"push: force must be finite (got {self.fx}, {self.fy})")
+        if not (self.x_min < self.x_max and self.y_min < self.y_max):
+            raise ValueError("push: need x_min < x_max and y_min < y_max")
+
+    def at(self, x: float, y: float) -> tuple[float, float]:
+        inside = self.x_min <= x <= self.x_max and self.y_min <= y <= self.y_max
+        return (self.fx, self.fy) if inside else (0.0, 0.0)
+
+
+@dataclass(frozen=True)
 class Environment:
-    """What acts on the boat: a uniform current (earth-frame velocity), waves and wind."""
+    """What acts on the boat: a uniform current (earth-frame velocity), waves, wind and pushes."""
 
     current: tuple[float, float] = (0.0, 0.0)
     waves: WaveField | None = None
     wind: Wind | None = None
+    pushes: tuple[Push, ...] = ()
 
     @classmethod
     def with_current(
@@ -148,7 +175,17 @@ class Environment:
 
     @property
     def calm(self) -> bool:
-        return self.current == (0.0, 0.0) and self.waves is None and self.wind is None
+        return (self.current == (0.0, 0.0) and self.waves is None and self.wind is None
+                and not self.pushes)
+
+    def push_body(self, x: float, y: float, psi: float) -> tuple[float, float]:
+        """Sum of the pushes at (x, y) in the body frame (N, surge and sway)."""
+        fx = fy = 0.0
+        for p in self.pushes:
+            px, py = p.at(x, y)
+            fx, fy = fx + px, fy + py
+        c, s = math.cos(psi), math.sin(psi)
+        return c * fx + s * fy, -s * fx + c * fy
 
     def current_body(self, psi: float) -> tuple[float, float]:
         """Current velocity (u_c, v_c) in the body frame at heading psi."""
