@@ -127,6 +127,11 @@ def build_parser() -> argparse.ArgumentParser:
                      "the mission exactly")
     sim.add_argument("--sea-state", type=int, default=0, choices=range(0, 7), metavar="0-6",
                      help="waves of this sea state running with the scenario's wind (default 0)")
+    sim.add_argument("--guidance", default="avlos_comp",
+                     choices=["avlos_comp", "avlos", "los", "ilos", "alos", "sliding_curve"],
+                     help="dynamic vehicle's guidance law (default avlos_comp)")
+    sim.add_argument("--controller", default="pid", choices=["pid", "pid_mrac", "drnn_pi", "pi"],
+                     help="dynamic vehicle's autopilot (default pid)")
     sim.add_argument("--duration", type=float, default=None,
                      help="stop after this many seconds (default: run until interrupted)")
     sim.add_argument("--boat-id", type=int, default=1, help="boat system id (default 1)")
@@ -157,6 +162,8 @@ def build_parser() -> argparse.ArgumentParser:
                        help="fewer repetitions, for a smoke test (figures not for the record)")
     bench.add_argument("--episodes", type=int, default=50,
                        help="live: seeded episodes of the simulated sea (default 50)")
+    bench.add_argument("--manoeuvres", action="store_true",
+                       help="tracking: add turning circle, zig-zags, pull-out and heading steps")
     bench.add_argument("--markdown", type=Path, metavar="JSON",
                        help="print the tables for RESULTS.md from a saved --json result")
     return parser
@@ -317,7 +324,8 @@ def _cmd_bench(args: argparse.Namespace) -> int:
     if args.name == "tracking":
         from usvstation.bench.tracking import run_tracking_bench
 
-        result = run_tracking_bench(progress=lambda msg: print(msg, file=sys.stderr, flush=True))
+        result = run_tracking_bench(progress=lambda msg: print(msg, file=sys.stderr, flush=True),
+                                    with_manoeuvres=args.manoeuvres)
         print(json.dumps(result, indent=2))
         return EXIT_OK
     from usvstation.bench.planner import render_markdown, run_planner_bench
