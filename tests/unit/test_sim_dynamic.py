@@ -147,4 +147,4 @@ def test_the_boat_tells_the_station_when_the_current_is_beyond_hold():
     for k in range(1, 300):  # 60 s of boat time, on the boat's own clock
         boat.update(now + 0.2 * k)
     warnings = [line for line in boat.log if "current exceeds what the boat can hold" in line]
-    assert warnings == ["WARNING: current exceeds what the boat can hold: drifting"]
+    assert warnings == ["current exceeds what the boat can hold: drifting"]  # one STATUSTEXT
