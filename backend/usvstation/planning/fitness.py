@@ -25,7 +25,7 @@ import numpy as np
 from usvstation.planning.encoding import PathBatch
 from usvstation.planning.options import IGAOptions
 from usvstation.planning.problem import Problem
-from usvstation.planning.xyt import hits_from_relative, polyline_hits, relative_positions
+from usvstation.planning.xyt import Num, hits_from_relative, polyline_hits, relative_positions
 
 _EPS = 1e-9
 
@@ -65,6 +65,30 @@ def turn_angles(headings: np.ndarray) -> np.ndarray:
     """|pi - theta| at every inner waypoint: the change of heading, radians in [0, pi]."""
     d = headings[:, 1:] - headings[:, :-1]
     return np.abs(np.mod(d + np.pi, 2.0 * np.pi) - np.pi)
+
+
+def first_turn(paths: PathBatch, problem: Problem) -> np.ndarray:
+    """Turn of the hull from the start heading onto the first leg, rad (issue 12)."""
+    h0 = np.arctan2(paths.seg_dy[:, 0], paths.seg_dx[:, 0])
+    cx, cy = problem.current
+    v0 = paths.v[:, 0]
+    hull = np.arctan2(v0 * np.sin(h0) - cy, v0 * np.cos(h0) - cx)
+    return np.abs(np.mod(hull - problem.start_heading + np.pi, 2.0 * np.pi) - np.pi)
+
+
+def water_speed_bad(dx: Num, dy: Num, v0: Num, v1: Num, problem: Problem) -> np.ndarray:
+    """True where a segment's speed through the water (ground velocity minus current) leaves
+    [speed_min, speed_max] at either end, or the hull would make way astern (issue 12)."""
+    cx, cy = problem.current
+    n = np.maximum(np.hypot(dx, dy), _EPS)
+    ux, uy = dx / n, dy / n
+    bad = np.zeros(np.broadcast_shapes(np.shape(ux), np.shape(v0), np.shape(v1)), dtype=bool)
+    for v in (v0, v1):
+        wx, wy = v * ux - cx, v * uy - cy
+        w2 = wx * wx + wy * wy
+        bad |= (w2 < (problem.speed_min * (1 - 1e-6)) ** 2) | (
+            w2 > (problem.speed_max * (1 + 1e-6)) ** 2) | (wx * ux + wy * uy <= 0.0)
+    return bad
 
 
 def collision_matrix(paths: PathBatch, problem: Problem) -> np.ndarray:
@@ -125,6 +149,11 @@ class Evaluator:
         acc_bad |= paths.seg_len <= _EPS
         vel_bad = (paths.v < problem.speed_min - _EPS) | (paths.v > problem.speed_max + _EPS)
         turn_bad = turns > problem.turn_max + _EPS
+        if problem.start_heading is not None:
+            turn_bad = np.column_stack([turn_bad, first_turn(paths, problem) > problem.turn_max])
+        if problem.current != (0.0, 0.0):
+            vel_bad = np.column_stack([vel_bad, water_speed_bad(
+                paths.seg_dx, paths.seg_dy, paths.v[:, :-1], paths.v[:, 1:], problem)])
         n_col = self.collisions(paths)
 
         n = paths.x.shape[1]

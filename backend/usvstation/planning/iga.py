@@ -60,8 +60,12 @@ class _Population:
     fit: np.ndarray  # (P,)
 
 
-def run_iga(problem: Problem, opts: IGAOptions, layout: GeneLayout | None = None) -> IGAResult:
-    """Plan with the IGA; deterministic for a given `opts.seed`."""
+def run_iga(
+    problem: Problem, opts: IGAOptions, layout: GeneLayout | None = None,
+    deadline: float | None = None,
+) -> IGAResult:
+    """Plan with the IGA; deterministic for a given `opts.seed` (unless the `deadline`,
+    a time.perf_counter() value, cuts the run short: stop_reason "time_budget")."""
     t0 = time.perf_counter()
     rng = np.random.default_rng(opts.seed)
     layout = layout or GeneLayout.build(problem, opts)
@@ -109,6 +113,8 @@ def run_iga(problem: Problem, opts: IGAOptions, layout: GeneLayout | None = None
         hist_best.append(best_fit)
         hist_elite.append(_elite_mean(pop.fit, n_elite))
         reason = _converged(hist_best, opts)
+        if reason is None and deadline is not None and time.perf_counter() > deadline:
+            reason = "time_budget"
         if reason:
             stop = reason
             break

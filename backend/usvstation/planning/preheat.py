@@ -37,6 +37,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from usvstation.planning.encoding import GeneLayout
+from usvstation.planning.fitness import water_speed_bad
 from usvstation.planning.options import IGAOptions
 from usvstation.planning.problem import Problem
 from usvstation.planning.xyt import Num, hits_from_relative
@@ -108,6 +109,13 @@ class _Grower:
         self.v2min, self.v2max = problem.speed_min**2, problem.speed_max**2
         last = layout.n_mid - 1
         self.run_in = float(layout.x_of(layout.x_count[last] // 2, last))
+        # a boat under way: its course binds the first leg (slope is measured against -x)
+        self.start_slope = np.nan
+        if problem.start_heading is not None:
+            h, v0 = problem.start_heading, problem.start_speed
+            cx, cy = problem.current
+            course = math.atan2(v0 * math.sin(h) + cy, v0 * math.cos(h) + cx)
+            self.start_slope = math.remainder(math.pi - course, 2.0 * math.pi)
 
     def _near_block(self, k: int) -> _Obstacles:
         """Obstacles that can touch a segment ending in block k (k = n_mid: the goal leg)."""
@@ -130,7 +138,7 @@ class _Grower:
         walk = _Walk(
             x=np.full(count, lay.start[0]), y=np.full(count, lay.start[1]),
             t=np.zeros(count), v=np.full(count, lay.start_speed),
-            slope=np.full(count, np.nan), greedy=self.rng.random(count) < 0.5,
+            slope=np.full(count, self.start_slope), greedy=self.rng.random(count) < 0.5,
             join_x=self.rng.uniform(self.run_in, float(lay.start[0]), size=count),
         )
         for k in range(lay.n_mid):
@@ -163,7 +171,7 @@ class _Grower:
         ax, ay = self._aim(k, px, walk.join_x[idx, None])
         taper = min(1.0, max(0.2, (lay.n_mid - 1 - k) / 3.0))
         offset = rng.uniform(-1.0, 1.0, size=(n, c))
-        if k == 0:
+        if k == 0 and np.isnan(self.start_slope):
             lo, hi = -_MAX_SLOPE, _MAX_SLOPE
         else:
             lo = np.maximum(slope0 - prob.turn_max, -_MAX_SLOPE)
@@ -182,15 +190,20 @@ class _Grower:
             y = lay.y_of(yl)
         slope = np.arctan2(y - py, dx)
         seg = np.hypot(dx, y - py)
-        vl, v, t, good = self._speed(pv, pt, seg)
-        if k > 0:
+        vl, v, t, good = self._speed(pv, pt, seg, -dx / seg, (y - py) / seg)
+        if k > 0 or not np.isnan(self.start_slope):
             good &= np.abs(slope - slope0) <= prob.turn_max + _EPS
+        if prob.current != (0.0, 0.0):
+            good &= ~water_speed_bad(x - px, y - py, pv, v, prob)
         good &= self._free(self.near[k], px, py, pt, x, y, t)
         if last:
             gx, gy = float(lay.goal[0]), float(lay.goal[1])
             gseg = np.hypot(x - gx, y - gy)
             good &= np.abs(np.arctan2(gy - y, x - gx) - slope) <= prob.turn_max + _EPS
-            gvl, _, gt, gok = self._speed(v, t, gseg)
+            gdx, gdy = gx - x, gy - y
+            gvl, gv, gt, gok = self._speed(v, t, gseg, gdx / gseg, gdy / gseg)
+            if prob.current != (0.0, 0.0):
+                gok &= ~water_speed_bad(gdx, gdy, v, gv, prob)
             good &= gok & self._free(self.near[k + 1], x, y, t, gx, gy, gt)
 
         placed = good.any(axis=1)
@@ -216,15 +229,22 @@ class _Grower:
         return np.where(px > join_x + lay.x_res, join_x, self.run_in), gy
 
     def _speed(
-        self, pv: np.ndarray, pt: np.ndarray, seg: np.ndarray
+        self, pv: np.ndarray, pt: np.ndarray, seg: np.ndarray, ux: Num = 1.0, uy: Num = 0.0,
     ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """A speed level reachable over `seg` within accel_max: (level, v, t, admissible)."""
-        lay = self.layout
-        reach, pv2 = (2.0 * self.problem.accel_max) * seg, pv * pv
-        jlo, jhi = lay.v_level_range(
-            np.sqrt(np.maximum(pv2 - reach, self.v2min)),
-            np.sqrt(np.minimum(pv2 + reach, self.v2max)),
-        )
+        lay, prob = self.layout, self.problem
+        reach, pv2 = (2.0 * prob.accel_max) * seg, pv * pv
+        vlo = np.sqrt(np.maximum(pv2 - reach, self.v2min))
+        vhi = np.sqrt(np.minimum(pv2 + reach, self.v2max))
+        if prob.current != (0.0, 0.0):
+            # ground speeds whose speed through the water lies in [speed_min, speed_max]
+            cx, cy = prob.current
+            along, across = ux * cx + uy * cy, ux * cy - uy * cx
+            c2 = across * across
+            vhi = np.minimum(vhi, along + np.sqrt(np.maximum(self.v2max - c2, 0.0)))
+            vhi = np.where(c2 >= self.v2max, -1.0, vhi)
+            vlo = np.maximum(vlo, along + np.sqrt(np.maximum(self.v2min - c2, 0.0)) + 1e-6)
+        jlo, jhi = lay.v_level_range(vlo, vhi)
         # three quarters of the draws take the fastest reachable speed, the rest are uniform
         u = self.rng.uniform(0.0, 4.0, size=seg.shape)
         vl = np.where(u >= 1.0, jhi, np.minimum(jlo + (u * (jhi - jlo + 1)).astype(np.int64), jhi))
