@@ -111,11 +111,8 @@ class _Grower:
         self.run_in = float(layout.x_of(layout.x_count[last] // 2, last))
         # a boat under way: its course binds the first leg (slope is measured against -x)
         self.start_slope = np.nan
-        if problem.start_heading is not None:
-            h, v0 = problem.start_heading, problem.start_speed
-            cx, cy = problem.current
-            course = math.atan2(v0 * math.sin(h) + cy, v0 * math.cos(h) + cx)
-            self.start_slope = math.remainder(math.pi - course, 2.0 * math.pi)
+        if problem.start_course is not None:
+            self.start_slope = math.remainder(math.pi - problem.start_course, 2.0 * math.pi)
 
     def _near_block(self, k: int) -> _Obstacles:
         """Obstacles that can touch a segment ending in block k (k = n_mid: the goal leg)."""

@@ -28,6 +28,7 @@ class StartState:
     speed: float  # m/s through the water
     t: float = 0.0
     bound: bool = False  # True: the first leg must stay within turn_max of `heading`
+    course: float | None = None  # rad, course over ground (default: the heading)
 
 
 @dataclass(frozen=True)
@@ -49,6 +50,7 @@ class Problem:
     offset: tuple[float, float] = (0.0, 0.0)
     start_heading: float | None = None  # planning-frame hull heading the first leg must respect
     current: tuple[float, float] = (0.0, 0.0)  # planning-frame current, m/s
+    start_course: float | None = None  # planning-frame course over ground at the start
 
     @classmethod
     def from_scenario(
@@ -112,6 +114,10 @@ class Problem:
             theta=theta,
             offset=offset,
             start_heading=(state.heading - theta) if state.bound else None,
+            start_course=(
+                (state.heading if state.course is None else state.course) - theta
+                if state.bound else None
+            ),
             current=current,
         )
 

@@ -24,7 +24,7 @@ from usvstation.planning.validate import MOVING_START_SPEED, current_vector
 from usvstation.planning.xyt import ObstacleField
 from usvstation.scenario import Scenario
 
-MAX_PREFIX_LEGS = 16
+MAX_PREFIX_LEGS = 24
 ALIGNED = math.radians(60.0)  # a start course within this of the goal needs no prefix
 
 
@@ -51,8 +51,9 @@ def start_state(scenario: Scenario) -> StartState:
     moving = s.speed >= MOVING_START_SPEED
     ground = math.hypot(s.speed * math.cos(h) + cx, s.speed * math.sin(h) + cy) if moving \
         else s.speed
+    course = math.atan2(s.speed * math.sin(h) + cy, s.speed * math.cos(h) + cx)
     return StartState(s.x, s.y, h, float(np.clip(ground, v.speed_min, v.speed_max)),
-                      bound=moving)
+                      bound=moving, course=course)
 
 
 def x_needed(opts: IGAOptions) -> float:
@@ -66,10 +67,9 @@ def needs_prefix(scenario: Scenario, opts: IGAOptions) -> bool:
         return True
     if s.speed < MOVING_START_SPEED:
         return False
-    state = start_state(scenario)
+    h = math.radians(s.heading_deg)
     cx, cy = current_vector(scenario)
-    course = math.atan2(state.speed * math.sin(state.heading) + cy,
-                        state.speed * math.cos(state.heading) + cx)
+    course = math.atan2(s.speed * math.sin(h) + cy, s.speed * math.cos(h) + cx)
     bearing = math.atan2(scenario.goal.y - s.y, scenario.goal.x - s.x)
     return abs(math.remainder(course - bearing, 2 * math.pi)) > ALIGNED
 
@@ -117,7 +117,10 @@ def _steer(scenario: Scenario, opts: IGAOptions, side: float) -> Prefix | None:
                 h += (side if abs(err) > math.pi - step else math.copysign(1.0, err)) * step
         gx, gy = water * math.cos(h) + cx, water * math.sin(h) + cy
         g = math.hypot(gx, gy)
-        x, y = x + gx / g * leg, y + gy / g * leg
+        run = leg
+        if x_out is not None and h == target and gx > 0.0:
+            run = max(leg, min(x_out - x, 200.0) * g / gx)  # straight out in one leg
+        x, y = x + gx / g * run, y + gy / g * run
         xs.append(x)
         ys.append(y)
         hulls.append(h)
@@ -135,7 +138,9 @@ def _steer(scenario: Scenario, opts: IGAOptions, side: float) -> Prefix | None:
     for i in range(len(xs) - 1):
         d = math.hypot(xs[i + 1] - xs[i], ys[i + 1] - ys[i])
         t.append(t[-1] + 2.0 * d / (speeds[i] + speeds[i + 1]))
-    end = StartState(xs[-1], ys[-1], hulls[-1], speeds[-1], t[-1], bound=True)
+    hh = hulls[-1]
+    course = math.atan2(water * math.sin(hh) + cy, water * math.cos(hh) + cx)
+    end = StartState(xs[-1], ys[-1], hh, speeds[-1], t[-1], bound=True, course=course)
     return Prefix(xs, ys, t, speeds, end)
 
 
