@@ -30,7 +30,7 @@ def test_plan_format_is_stable():
     plan = plan_scenario(load_scenario("case1"), seed=1)
     assert {"planner", "scenario", "seed", "waypoints", "metrics"} <= plan.keys()
     assert (plan["planner"], plan["scenario"], plan["seed"]) == ("iga", "case1", 1)
-    assert set(plan["waypoints"][0]) == {"x", "y", "t", "speed", "heading_deg"}
+    assert set(plan["waypoints"][0]) == {"x", "y", "t", "speed", "heading_deg", "course_deg"}
     assert {"fitness", "fit_d", "fit_t", "fit_mal", "fit_ang", "length_m", "duration_s",
             "min_clearance_m", "collision_free", "generations", "elapsed_s"
             } <= plan["metrics"].keys()

@@ -51,9 +51,16 @@ def start_state(scenario: Scenario) -> StartState:
     moving = s.speed >= MOVING_START_SPEED
     ground = math.hypot(s.speed * math.cos(h) + cx, s.speed * math.sin(h) + cy) if moving \
         else s.speed
-    course = math.atan2(s.speed * math.sin(h) + cy, s.speed * math.cos(h) + cx)
+    course = ground_course(h, s.speed, cx, cy)
     return StartState(s.x, s.y, h, float(np.clip(ground, v.speed_min, v.speed_max)),
                       bound=moving, course=course)
+
+
+def ground_course(heading: float, water_speed: float, cx: float, cy: float) -> float:
+    """Course over ground of a hull at `heading` making `water_speed` in the current; the
+    heading itself when the current holds the boat (almost) still over ground."""
+    gx, gy = water_speed * math.cos(heading) + cx, water_speed * math.sin(heading) + cy
+    return heading if math.hypot(gx, gy) < 0.1 else math.atan2(gy, gx)
 
 
 def x_needed(opts: IGAOptions) -> float:
@@ -69,7 +76,7 @@ def needs_prefix(scenario: Scenario, opts: IGAOptions) -> bool:
         return False
     h = math.radians(s.heading_deg)
     cx, cy = current_vector(scenario)
-    course = math.atan2(s.speed * math.sin(h) + cy, s.speed * math.cos(h) + cx)
+    course = ground_course(h, s.speed, cx, cy)
     bearing = math.atan2(scenario.goal.y - s.y, scenario.goal.x - s.x)
     return abs(math.remainder(course - bearing, 2 * math.pi)) > ALIGNED
 
