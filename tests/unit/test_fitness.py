@@ -22,7 +22,7 @@ def problem(start=(40.0, 0.0), obstacles=(), kind="recovery", goal=(0.0, 0.0), *
         "obstacles": [dict(zip(("x", "y", "radius", "vx", "vy"), o, strict=True))
                       for o in obstacles],
         "vessel": {"speed_min": 0.2, "speed_max": 3.0, "accel_max": 0.5, "turn_max_deg": 60.0,
-                   **vessel},
+                   "time_margin_s": 0.0, **vessel},
     }
     return Problem.from_scenario(parse_scenario(data))
 
