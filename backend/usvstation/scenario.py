@@ -147,6 +147,21 @@ class Scenario(BaseModel):
         return IGAOptions(**{**base, **overrides})
 
 
+def scenario_at(
+    scenario: Scenario, x: float, y: float, heading_deg: float, speed: float, t: float
+) -> Scenario:
+    """The scenario seen from a boat at ramp-frame (x, y) with hull heading and speed, `t` s
+    after the scenario's t = 0: obstacles propagated to that instant (eq. 8), which becomes
+    the new t = 0. Raises ScenarioError (one line) if the result is not a valid scenario."""
+    data = scenario.model_dump()
+    data["start"] = {"x": float(x), "y": float(y), "heading_deg": float(heading_deg) % 360.0,
+                     "speed": float(speed)}
+    for o in data["obstacles"]:
+        o["x"] += o["vx"] * t
+        o["y"] += o["vy"] * t
+    return parse_scenario(data)
+
+
 class ScenarioError(ValueError):
     """A scenario could not be read or is invalid; the message is one line naming the field."""
 

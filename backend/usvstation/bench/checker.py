@@ -74,7 +74,10 @@ def check_plan(plan: dict[str, Any], scenario: Scenario,
     if turns.size and turns.max() > v.turn_max_deg + ANGLE_TOL_DEG:
         rep.problems.append(f"turn of {turns.max():.2f} deg above {v.turn_max_deg}")
     if scenario.start.speed >= 0.5:
-        hull0 = math.atan2(water[0, 1], water[0, 0])
+        # the hull as the boat leaves the start: its waypoint speed along the first course
+        u0 = ground[0] / max(float(np.hypot(*ground[0])), 1e-12)
+        w0 = wps[0]["speed"] * u0 - cur
+        hull0 = math.atan2(w0[1], w0[0])
         d = math.degrees(abs(math.remainder(hull0 - math.radians(scenario.start.heading_deg),
                                             2 * math.pi)))
         rep.first_turn_deg = d
@@ -107,14 +110,14 @@ def _sampled_clearance(x: np.ndarray, y: np.ndarray, t: np.ndarray, scenario: Sc
     ovy = np.array([o.vy for o in obs])
     rad = np.array([o.radius for o in obs]) + scenario.vessel.length / 2.0
     moving = (ovx != 0.0) | (ovy != 0.0)
-    n_shift = int(math.ceil(2 * margin_s / SHIFT_STEP_S)) + 1 if margin_s > 0 else 1
+    n_shift = math.ceil(2 * margin_s / SHIFT_STEP_S) + 1 if margin_s > 0 else 1
     shifts = np.linspace(-margin_s, margin_s, n_shift) if margin_s > 0 else np.zeros(1)
     best = math.inf
     rel_speed = float(np.max(np.hypot(ovx, ovy), initial=0.0))
     for i in range(len(x) - 1):
         seg_t = t[i + 1] - t[i]
         sp = math.hypot(x[i + 1] - x[i], y[i + 1] - y[i]) / seg_t
-        n = max(2, int(math.ceil(seg_t * (sp + rel_speed) / STEP_M)) + 1)
+        n = max(2, math.ceil(seg_t * (sp + rel_speed) / STEP_M) + 1)
         n = min(n, 20_000)
         s = np.linspace(0.0, 1.0, n)
         px = x[i] + s * (x[i + 1] - x[i])

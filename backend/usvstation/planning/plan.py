@@ -18,7 +18,7 @@ from usvstation.planning.smoothing import smooth_path
 from usvstation.planning.start import Prefix, needs_prefix, prefixes, start_state
 from usvstation.planning.validate import current_vector, hull_clearance, plan_violations
 from usvstation.planning.xyt import ObstacleField
-from usvstation.scenario import Scenario
+from usvstation.scenario import Scenario, scenario_at
 
 PLANNERS = ("iga",)
 MIN_WATER_M = 0.05  # least water between hull and obstacle a plan may keep, m
@@ -89,21 +89,6 @@ def replan_from(
     and the plan's t = 0 is that instant."""
     at_now = scenario_at(scenario, x, y, heading_deg, speed, t)
     return plan_scenario(at_now, planner=planner, seed=seed, **overrides)
-
-
-def scenario_at(
-    scenario: Scenario, x: float, y: float, heading_deg: float, speed: float, t: float
-) -> Scenario:
-    """The scenario seen from a boat at (x, y) with the given heading and speed, `t` s in."""
-    from usvstation.scenario import parse_scenario
-
-    data = scenario.model_dump()
-    data["start"] = {"x": float(x), "y": float(y), "heading_deg": float(heading_deg) % 360.0,
-                     "speed": float(speed)}
-    for o in data["obstacles"]:
-        o["x"] += o["vx"] * t
-        o["y"] += o["vy"] * t
-    return parse_scenario(data)
 
 
 def clearance_margins(scenario: Scenario, fallback: bool) -> list[tuple[float, str | None]]:

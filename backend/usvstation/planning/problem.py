@@ -141,6 +141,8 @@ def sweep_moving(
     The circles sit s = R_l / 2 apart along the track, each of radius
     sqrt(R_l^2 + (s / 2)^2), so their union covers the capsule swept by the
     circle of radius R_l (the worst point lies midway between two centres).
+    An obstacle that moves less than R_l / 2 in margin_s stays a single
+    circle of radius R_l + |v| margin_s, which covers the capsule too.
     Returns (centre, velocity, radius, inflated, source index).
     """
     n = radius.shape[0]
@@ -150,7 +152,12 @@ def sweep_moving(
     if margin_s <= 0.0 or not moving.any():
         return centre, velocity, radius, inflated, source
     spacing = inflated / 2.0
-    copies = np.where(moving, np.ceil(2.0 * margin_s * speed / spacing).astype(np.int64) + 1, 1)
+    sweep = margin_s * speed
+    # a slow drifter (sweep within half its radius) stays one circle, grown by the sweep
+    single = moving & (sweep <= 0.5 * inflated)
+    inflated = np.where(single, inflated + sweep, inflated)
+    chain = moving & ~single
+    copies = np.where(chain, np.ceil(2.0 * sweep / spacing).astype(np.int64) + 1, 1)
     src = np.repeat(source, copies)
     first = np.repeat(np.cumsum(copies) - copies, copies)
     k = np.arange(src.shape[0]) - first

@@ -23,6 +23,8 @@ import itertools
 import math
 from typing import Any
 
+import numpy as np
+
 from usvstation.scenario import Scenario
 
 TOL = 1e-6
@@ -89,14 +91,14 @@ def plan_violations(plan: dict[str, Any], scenario: Scenario) -> list[str]:
             if lo < v.speed_min - 1e-4 or hi > v.speed_max + 1e-4 or not fwd:
                 out.append(f"segment {i}: speed through the water {lo:.3f}-{hi:.3f} m/s outside "
                            f"[{v.speed_min}, {v.speed_max}]" + ("" if fwd else " or astern"))
-    clear = clearances(plan, scenario, margin_s=0.0)
-    for (i, j), c in clear.items():
-        if c <= TOL:
-            out.append(f"segment {i}: hull {c:.3f} m from obstacles[{j}] (touching or inside)")
+    clear = clearance_matrix(plan, scenario) if scenario.obstacles else np.zeros((0, 0))
+    for i, j in zip(*np.nonzero(clear <= TOL), strict=True):
+        out.append(f"segment {i}: hull {clear[i, j]:.3f} m from obstacles[{j}] "
+                   "(touching or inside)")
     if v.time_margin_s > 0.0:
         swept = clearances(plan, scenario, margin_s=v.time_margin_s, moving_only=True)
         for (i, j), c in swept.items():
-            if c <= TOL and clear[(i, j)] > TOL:
+            if c <= TOL and clear[i, j] > TOL:
                 out.append(f"segment {i}: hull within {c:.3f} m of obstacles[{j}] when "
                            f"{v.time_margin_s:g} s early or late")
     if scenario.kind == "recovery":
@@ -157,22 +159,55 @@ def clearances(
 
     With `margin_s` > 0 each moving obstacle is swept over [t - margin_s, t + margin_s].
     """
+    obs = scenario.obstacles
+    if not obs:
+        return {}
+    wps = plan["waypoints"]
     half_hull = scenario.vessel.length / 2.0
+    if margin_s <= 0.0:
+        d = clearance_matrix(plan, scenario)
+        cols = [j for j, o in enumerate(obs) if o.moving or not moving_only]
+        return {(i, j): float(d[i, j]) for i in range(d.shape[0]) for j in cols}
     out: dict[tuple[int, int], float] = {}
-    for j, obs in enumerate(scenario.obstacles):
-        if moving_only and not obs.moving:
+    for j, o in enumerate(obs):
+        if moving_only and not o.moving:
             continue
-        m = margin_s if obs.moving else 0.0
-        for i, (a, b) in enumerate(itertools.pairwise(plan["waypoints"])):
-            d = closest_distance(a, b, obs.x, obs.y, obs.vx, obs.vy, m)
-            out[(i, j)] = d - obs.radius - half_hull
+        m = margin_s if o.moving else 0.0
+        for i, (a, b) in enumerate(itertools.pairwise(wps)):
+            dist = closest_distance(a, b, o.x, o.y, o.vx, o.vy, m)
+            out[(i, j)] = dist - o.radius - half_hull
     return out
+
+
+def clearance_matrix(plan: dict[str, Any], scenario: Scenario) -> np.ndarray:
+    """(segments, obstacles) water between hull and obstacle on time, m (closest approach of
+    two linear motions, exact)."""
+    wps = plan["waypoints"]
+    x = np.array([w["x"] for w in wps], dtype=float)
+    y = np.array([w["y"] for w in wps], dtype=float)
+    t = np.array([w["t"] for w in wps], dtype=float)
+    obs = scenario.obstacles
+    ox = np.array([o.x for o in obs])[None, :]
+    oy = np.array([o.y for o in obs])[None, :]
+    vx = np.array([o.vx for o in obs])[None, :]
+    vy = np.array([o.vy for o in obs])[None, :]
+    r = np.array([o.radius for o in obs])[None, :] + scenario.vessel.length / 2.0
+    t0, t1 = t[:-1, None], t[1:, None]
+    r0x, r0y = x[:-1, None] - (ox + vx * t0), y[:-1, None] - (oy + vy * t0)
+    drx = (x[1:, None] - x[:-1, None]) - vx * (t1 - t0)
+    dry = (y[1:, None] - y[:-1, None]) - vy * (t1 - t0)
+    dd = drx * drx + dry * dry
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s = np.where(dd > 0.0, -(r0x * drx + r0y * dry) / dd, 0.0)
+    s = np.clip(s, 0.0, 1.0)
+    return np.hypot(r0x + s * drx, r0y + s * dry) - r
 
 
 def hull_clearance(plan: dict[str, Any], scenario: Scenario) -> float | None:
     """Least water between hull and any obstacle circle over the plan, m (None: no obstacles)."""
-    clear = clearances(plan, scenario)
-    return min(clear.values()) if clear else None
+    if not scenario.obstacles:
+        return None
+    return float(clearance_matrix(plan, scenario).min())
 
 
 def closest_distance(
