@@ -217,9 +217,18 @@ def _newborns(
 ) -> tuple[np.ndarray, np.ndarray, PreheatReport]:
     """SSIH's newborns (codes): mostly local re-initialisations of elite paths, some fresh.
 
-    Without a living elite (EG1's random start) the newborns are preheated
-    directly. Returns (newborns, fresh stock left, report).
+    Without a living elite the newborns are preheated directly; under EG1
+    (no preheating at all) they are random instead. Returns (newborns, fresh
+    stock left, report).
     """
+    if not opts.preheat:
+        pool = [layout.levels_to_codes(random_levels(layout, rng, max(1, n // 5)))]
+        if parents.shape[0]:
+            local = local_reinit(layout, rng, layout.codes_to_levels(parents), n - pool[0].shape[0])
+            pool.append(layout.levels_to_codes(local))
+        else:
+            pool = [layout.levels_to_codes(random_levels(layout, rng, n))]
+        return np.vstack(pool), fresh, report
     if parents.shape[0] == 0 and fresh.shape[0] == 0:
         grown, ok, rep = preheat(layout, problem, opts, rng, n)
         report.merge(rep)
