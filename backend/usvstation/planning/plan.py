@@ -72,12 +72,16 @@ def plan_scenario(
                 reasons.append("the exact check refused the best path: " + bad[0])
             first = first or (problem, result)
             if time.perf_counter() > deadline:
-                raise NoFeasiblePlan(
-                    f"no feasible plan within the time budget of {opts.time_budget_s:g} s")
+                break
+        if time.perf_counter() > deadline:
+            break
+    head = "no feasible plan"
+    if time.perf_counter() > deadline:
+        head += f" within the time budget of {opts.time_budget_s:g} s"
     if first is None:
-        raise NoFeasiblePlan("no feasible plan: " + (reasons[0] if reasons else
+        raise NoFeasiblePlan(f"{head}: " + (reasons[0] if reasons else
                              "no collision-free way to turn the boat towards the goal"))
-    raise NoFeasiblePlan(f"no feasible plan: {explain_infeasible(*first)}")
+    raise NoFeasiblePlan(f"{head}: {explain_infeasible(*first)}")
 
 
 def replan_from(
