@@ -45,6 +45,8 @@ def plan_scenario(
     for margin, warning in clearance_margins(scenario, opts.clearance_fallback):
         starts: list[Prefix | None] = [None] if direct else []
         starts += prefixes(scenario, opts, margin)
+        if not starts:  # no run-out needed after all (e.g. a hull already crabbing right)
+            starts = [None]
         for prefix in starts:
             state = start_state(scenario) if prefix is None else prefix.end
             problem = Problem.from_scenario(scenario, margin, state=state)

@@ -111,7 +111,7 @@ def _steer(scenario: Scenario, opts: IGAOptions, side: float) -> Prefix | None:
             target = 0.0
         else:
             x_out = None
-            target = math.atan2(scenario.goal.y - y, scenario.goal.x - x)
+            target = _crab(math.atan2(scenario.goal.y - y, scenario.goal.x - x), water, cx, cy)
             if h is not None and abs(math.remainder(h - target, 2 * math.pi)) <= step / 2:
                 break
         if h is None:
@@ -149,6 +149,12 @@ def _steer(scenario: Scenario, opts: IGAOptions, side: float) -> Prefix | None:
     course = math.atan2(water * math.sin(hh) + cy, water * math.cos(hh) + cx)
     end = StartState(xs[-1], ys[-1], hh, speeds[-1], t[-1], bound=True, course=course)
     return Prefix(xs, ys, t, speeds, end)
+
+
+def _crab(course: float, water: float, cx: float, cy: float) -> float:
+    """Hull heading that makes good `course` over ground at `water` m/s in the current."""
+    across = -cx * math.sin(course) + cy * math.cos(course)
+    return course - math.asin(max(-1.0, min(1.0, across / water)))
 
 
 def _field(scenario: Scenario, margin: float) -> ObstacleField:
