@@ -7,6 +7,13 @@
     Fit_ang = sum over inner waypoints of (pi - theta) / pi    (theta: inner angle)
     Fit_mal = sum of |y_i| / N                                 (malposition, m)
 
+With `terms = "normalised"` (the default, issue 12) the fitness uses
+Fit_T and Fit_mal without units, so that the weights mean the same for an
+85 m recovery and a 2 km transit (D: straight start-goal distance):
+
+    Fit_T'   = t_end v_max / D                            (1: straight at top speed)
+    Fit_mal' = Fit_mal / D
+
 The hard gates are 1 when the constraint holds on every segment and 0
 otherwise: G_acc (|dv|/dT <= accel_max), G_vel (speed_min <= v <= speed_max),
 G_col (no segment enters an inflated obstacle, eq. 9), and G_turn, the
@@ -39,6 +46,8 @@ class Evaluation:
     fit_t: np.ndarray
     fit_ang: np.ndarray
     fit_mal: np.ndarray
+    fit_t_norm: np.ndarray  # t_end v_max / D: 1 for a straight run at top speed
+    fit_mal_norm: np.ndarray  # Fit_mal / D
     g_acc: np.ndarray
     g_vel: np.ndarray
     g_col: np.ndarray
@@ -161,6 +170,11 @@ class Evaluator:
         fit_t = paths.t[:, -1] / (n - 1)
         fit_ang = turns.sum(axis=1) / np.pi
         fit_mal = np.abs(paths.y).sum(axis=1) / n
+        dist = max(problem.distance, _EPS)
+        fit_t_norm = paths.t[:, -1] * problem.speed_max / dist
+        fit_mal_norm = fit_mal / dist
+        t_term, mal_term = (fit_t_norm, fit_mal_norm) if opts.terms == "normalised" \
+            else (fit_t, fit_mal)
         n_acc, n_vel, n_turn = acc_bad.sum(axis=1), vel_bad.sum(axis=1), turn_bad.sum(axis=1)
         g_acc, g_vel, g_col, g_turn = n_acc == 0, n_vel == 0, n_col == 0, n_turn == 0
         violations = n_acc + n_vel + n_turn + n_col
@@ -169,11 +183,12 @@ class Evaluator:
             fitness = _linear_penalty(fit_d, violations, opts)
         else:
             d = opts.weight_d if problem.recovery else 0.0
-            denom = opts.weight_a * fit_d + opts.weight_b * fit_t + opts.weight_c * fit_ang
-            denom += d * fit_mal
+            denom = opts.weight_a * fit_d + opts.weight_b * t_term + opts.weight_c * fit_ang
+            denom += d * mal_term
             fitness = np.where(violations == 0, opts.scale_A / denom, 0.0)
         return Evaluation(
             fitness=fitness, fit_d=fit_d, fit_t=fit_t, fit_ang=fit_ang, fit_mal=fit_mal,
+            fit_t_norm=fit_t_norm, fit_mal_norm=fit_mal_norm,
             g_acc=g_acc, g_vel=g_vel, g_col=g_col, g_turn=g_turn, violations=violations,
         )
 

@@ -71,9 +71,19 @@ class IGAOptions(BaseModel):
 
     # fitness eq. 12: A / (a Fit_d + b Fit_T + c Fit_ang + d Fit_mal)
     weight_a: float = Field(4.0, ge=0.0, le=1e6, description="a, on Fit_d")
-    weight_b: float = Field(0.5, ge=0.0, le=1e6, description="b, on Fit_T")
+    weight_b: float = Field(
+        1.4, ge=0.0, le=1e6, description="b, on Fit_T (normalised; 0.5 on the paper's seconds)"
+    )
     weight_c: float = Field(2.0, ge=0.0, le=1e6, description="c, on Fit_ang")
-    weight_d: float = Field(0.5, ge=0.0, le=1e6, description="d, on Fit_mal (recovery only)")
+    weight_d: float = Field(
+        40.0, ge=0.0, le=1e6,
+        description="d, on Fit_mal (recovery only; normalised; 0.5 on the paper's metres)",
+    )
+    terms: Literal["normalised", "paper"] = Field(
+        "normalised",
+        description="Fit_T and Fit_mal without units (t_end v_max / D, Fit_mal / D), or in the "
+        "paper's seconds and metres (then weights b and d of about 0.5)",
+    )
     scale_A: float = Field(10.0, gt=0.0, le=1e9, description="A, numerator of eq. 12")
 
     # preheating (Algorithm 1 lines 2-18)
