@@ -254,11 +254,31 @@ class _Grower:
         """True where the segment misses every inflated obstacle of `obs` (eq. 9)."""
         if obs.index.size == 0:
             return np.ones(np.shape(x), dtype=bool)
+        obs = _near_box(obs, px, py, pt, x, y, t)
+        if obs.index.size == 0:
+            return np.ones(np.shape(x), dtype=bool)
         ex0, ey0 = obs.relative(px, py, pt)
         ex1, ey1 = obs.relative(x, y, t)
         hits = hits_from_relative(ex0, ey0, ex1, ey1, obs.r)  # (m, n, C)
         self.report.obstacle_hits[obs.index] += hits.sum(axis=(1, 2))
         return ~hits.any(axis=0)
+
+
+def _near_box(obs: _Obstacles, px: Num, py: Num, pt: Num, x: Num, y: Num, t: Num) -> _Obstacles:
+    """The obstacles whose circle, swept over the draw's time window, reaches the box that
+    all candidate segments of the draw span (x-y-t pruning; exact, never drops a hit)."""
+    xlo, xhi = min(np.min(px), np.min(x)), max(np.max(px), np.max(x))
+    ylo, yhi = min(np.min(py), np.min(y)), max(np.max(py), np.max(y))
+    tlo, thi = float(np.min(pt)), float(np.max(t))
+    cx, cy, vx, vy, r = (a[:, 0, 0] for a in (obs.cx, obs.cy, obs.vx, obs.vy, obs.r))
+    keep = ((cx + np.maximum(vx * tlo, vx * thi) + r >= xlo)
+            & (cx + np.minimum(vx * tlo, vx * thi) - r <= xhi)
+            & (cy + np.maximum(vy * tlo, vy * thi) + r >= ylo)
+            & (cy + np.minimum(vy * tlo, vy * thi) - r <= yhi))
+    if keep.all():
+        return obs
+    return _Obstacles(obs.index[keep], obs.cx[keep], obs.cy[keep], obs.vx[keep], obs.vy[keep],
+                      obs.r[keep])
 
 
 def preheat(
