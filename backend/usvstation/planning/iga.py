@@ -77,7 +77,7 @@ def run_iga(
     def fitness(codes: np.ndarray) -> np.ndarray:
         return evaluator(layout.decode_codes(codes)).fitness
 
-    levels, fresh, report = _foundation(layout, problem, opts, rng)
+    levels, fresh, report = _foundation(layout, problem, opts, rng, deadline)
     codes = layout.levels_to_codes(levels)
     pop = _Population(codes, fitness(codes))
     evaluations = pop_n
@@ -128,7 +128,8 @@ def run_iga(
 
 
 def _foundation(
-    layout: GeneLayout, problem: Problem, opts: IGAOptions, rng: np.random.Generator
+    layout: GeneLayout, problem: Problem, opts: IGAOptions, rng: np.random.Generator,
+    deadline: float | None = None,
 ) -> tuple[np.ndarray, np.ndarray, PreheatReport]:
     """Initial population (levels), a stock of fresh preheated paths for SSIH, the report.
 
@@ -140,13 +141,15 @@ def _foundation(
     if not opts.preheat:
         empty = np.zeros((0, layout.n_genes), dtype=np.int64)
         return random_levels(layout, rng, pop_n), empty, PreheatReport()
-    grown, ok, report = preheat(layout, problem, opts, rng, (3 * pop_n) // 2, need=pop_n)
-    if ok.sum() < max(4, pop_n // 4):
+    grown, ok, report = preheat(layout, problem, opts, rng, (3 * pop_n) // 2, need=pop_n,
+                                deadline=deadline)
+    if ok.sum() < max(4, pop_n // 4) and (deadline is None or time.perf_counter() < deadline):
         # hard problem: one more round with many more candidates and draws per waypoint
         harder = opts.model_copy(update={
             "candidates": 4 * opts.candidates, "preheat_retries": 4 * opts.preheat_retries,
         })
-        more, ok_more, rep = preheat(layout, problem, harder, rng, 2 * pop_n, need=pop_n)
+        more, ok_more, rep = preheat(layout, problem, harder, rng, 2 * pop_n, need=pop_n,
+                                     deadline=deadline)
         report.merge(rep)
         grown, ok = np.vstack([grown, more]), np.concatenate([ok, ok_more])
     grown = grown[ok]

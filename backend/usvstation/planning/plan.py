@@ -291,7 +291,7 @@ def enclosing_obstacles(problem: Problem, cell: float = 0.5) -> list[int] | None
     r = f.inflated[static]
     lo = pts.min(axis=0) - r.max() - 5.0
     hi = pts.max(axis=0) + r.max() + 5.0
-    cell = max(cell, float(np.max(hi - lo)) / 1500.0)
+    cell = max(cell, float(np.max(hi - lo)) / 500.0)
     gx = np.arange(lo[0], hi[0], cell)
     gy = np.arange(lo[1], hi[1], cell)
     xx, yy = np.meshgrid(gx, gy, indexing="ij")

@@ -32,6 +32,7 @@ moving ones always, static ones when their inflated circle overlaps it.
 from __future__ import annotations
 
 import math
+import time
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -283,7 +284,7 @@ def _near_box(obs: _Obstacles, px: Num, py: Num, pt: Num, x: Num, y: Num, t: Num
 
 def preheat(
     layout: GeneLayout, problem: Problem, opts: IGAOptions, rng: np.random.Generator,
-    count: int, need: int | None = None,
+    count: int, need: int | None = None, deadline: float | None = None,
 ) -> tuple[np.ndarray, np.ndarray, PreheatReport]:
     """Grow `count` individuals; returns (levels (count, G), ok (count,), report).
 
@@ -298,6 +299,8 @@ def preheat(
     todo = np.arange(count)
     for _ in range(opts.preheat_restarts + 1):
         if todo.size == 0 or ok.sum() >= need:
+            break
+        if deadline is not None and time.perf_counter() > deadline:
             break
         lv, good = grower.grow(todo.size)
         levels[todo[good]] = lv[good]
