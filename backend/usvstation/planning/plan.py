@@ -9,7 +9,7 @@ from typing import Any
 import numpy as np
 from scipy import ndimage
 
-from usvstation.planning.encoding import InfeasibleProblem
+from usvstation.planning.encoding import GeneLayout, InfeasibleProblem
 from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.planning.iga import IGAResult, run_iga
 from usvstation.planning.options import IGAOptions
@@ -51,7 +51,16 @@ def plan_scenario(
             state = start_state(scenario) if prefix is None else prefix.end
             problem = Problem.from_scenario(scenario, margin, state=state)
             try:
-                result = run_iga(problem, opts, deadline=deadline)
+                layout = GeneLayout.build(problem, opts)
+                blocked = run_in_blockers(problem, layout)
+                if blocked:  # no arrival along the ramp axis is free: no GA run can help
+                    names = ", ".join(f"obstacles[{i}]" for i in blocked)
+                    reasons.append(
+                        f"the run-in along the ramp axis is blocked: {names} (inflated by "
+                        f"eq. 7) cross every arrival within "
+                        f"{math.degrees(math.atan(layout.cone_tan)):g} deg of the axis")
+                    continue
+                result = run_iga(problem, opts, layout, deadline=deadline)
             except InfeasibleProblem as exc:
                 reasons.append(str(exc))
                 continue
@@ -256,7 +265,11 @@ def explain_infeasible(problem: Problem, result: IGAResult) -> str:
 
 def approach_blockers(problem: Problem, result: IGAResult) -> list[int]:
     """Static obstacles that cut every straight arrival inside the ramp-axis cone."""
-    lay = result.layout
+    return run_in_blockers(problem, result.layout)
+
+
+def run_in_blockers(problem: Problem, lay: GeneLayout) -> list[int]:
+    """Static obstacles that cut every straight arrival inside the ramp-axis cone."""
     f = problem.obstacles
     if lay.cone_tan is None or f.count == 0:
         return []
