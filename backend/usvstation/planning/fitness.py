@@ -35,6 +35,7 @@ from usvstation.planning.problem import Problem
 from usvstation.planning.xyt import Num, hits_from_relative, polyline_hits, relative_positions
 
 _EPS = 1e-9
+CHUNK_ELEMENTS = 1 << 21  # (path, pair) elements per NumPy call: about 16 MB per temporary
 
 
 @dataclass(frozen=True)
@@ -143,14 +144,19 @@ class Evaluator:
             return np.zeros(len(paths), dtype=np.int64)
         if self.pairs is None:
             return collision_matrix(paths, self.problem).sum(axis=(0, 1))
-        seg, keep = self._pairs_near(paths)
-        cx, cy, vx, vy, r = (a[keep] for a in self._pair_obs)
-        t0, t1 = paths.t[:, seg], paths.t[:, seg + 1]
-        hits = hits_from_relative(
-            paths.x[:, seg] - (cx + vx * t0), paths.y[:, seg] - (cy + vy * t0),
-            paths.x[:, seg + 1] - (cx + vx * t1), paths.y[:, seg + 1] - (cy + vy * t1), r,
-        )
-        return hits.sum(axis=1)
+        seg_all, keep_all = self._pairs_near(paths)
+        total = np.zeros(len(paths), dtype=np.int64)
+        step = max(1, CHUNK_ELEMENTS // max(len(paths), 1))  # bounds memory on huge inputs
+        for k in range(0, seg_all.shape[0], step):
+            seg, keep = seg_all[k:k + step], keep_all[k:k + step]
+            cx, cy, vx, vy, r = (a[keep] for a in self._pair_obs)
+            t0, t1 = paths.t[:, seg], paths.t[:, seg + 1]
+            hits = hits_from_relative(
+                paths.x[:, seg] - (cx + vx * t0), paths.y[:, seg] - (cy + vy * t0),
+                paths.x[:, seg + 1] - (cx + vx * t1), paths.y[:, seg + 1] - (cy + vy * t1), r,
+            )
+            total += hits.sum(axis=1)
+        return total
 
     def _pairs_near(self, paths: PathBatch) -> tuple[np.ndarray, np.ndarray]:
         """The precomputed pairs whose obstacle can reach the batch's segment boxes."""

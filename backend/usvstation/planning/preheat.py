@@ -258,11 +258,17 @@ class _Grower:
         obs = _near_box(obs, px, py, pt, x, y, t)
         if obs.index.size == 0:
             return np.ones(np.shape(x), dtype=bool)
-        ex0, ey0 = obs.relative(px, py, pt)
-        ex1, ey1 = obs.relative(x, y, t)
-        hits = hits_from_relative(ex0, ey0, ex1, ey1, obs.r)  # (m, n, C)
-        self.report.obstacle_hits[obs.index] += hits.sum(axis=(1, 2))
-        return ~hits.any(axis=0)
+        free = np.ones(np.broadcast_shapes(np.shape(x), np.shape(px)), dtype=bool)
+        step = max(1, (1 << 21) // max(free.size, 1))  # bounds memory on huge inputs
+        for k in range(0, obs.index.size, step):
+            part = _Obstacles(*(a[k:k + step] for a in (obs.index, obs.cx, obs.cy, obs.vx,
+                                                         obs.vy, obs.r)))
+            ex0, ey0 = part.relative(px, py, pt)
+            ex1, ey1 = part.relative(x, y, t)
+            hits = hits_from_relative(ex0, ey0, ex1, ey1, part.r)  # (m, n, C)
+            self.report.obstacle_hits[part.index] += hits.sum(axis=(1, 2))
+            free &= ~hits.any(axis=0)
+        return free
 
 
 def _near_box(obs: _Obstacles, px: Num, py: Num, pt: Num, x: Num, y: Num, t: Num) -> _Obstacles:
