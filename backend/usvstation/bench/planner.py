@@ -71,7 +71,7 @@ def run_planner_bench(
         out["scenarios"].append(bench_scenario(scenario, seed_list))
         progress(f"ablations EG1-EG4 on {scenario.name}")
         ablation_rows.append(bench_ablations(scenario, ablation_seeds))
-        progress(f"DEAP baseline on {scenario.name}")
+        progress(f"DEAP and pymoo baselines on {scenario.name}")
         out["baseline"]["runs"].extend(bench_deap(scenario, deap_seeds, deap_max))
     out["ablation"].update(ablation_tables(ablation_rows))
     out["baseline"]["summary"] = baseline_summary(out["baseline"]["runs"])
