@@ -95,6 +95,7 @@ class _Walk:
     slope: np.ndarray  # bearing of the last segment against -x, rad (nan before the first)
     greedy: np.ndarray  # keeps the admissible candidate closest to the aim
     join_x: np.ndarray  # recovery: where this individual aims to join the ramp axis
+    aim_y: np.ndarray  # y it aims for until join_x: the axis, or a wide detour (issue 12)
 
 
 class _Grower:
@@ -138,6 +139,7 @@ class _Grower:
             t=np.zeros(count), v=np.full(count, lay.start_speed),
             slope=np.full(count, self.start_slope), greedy=self.rng.random(count) < 0.5,
             join_x=self.rng.uniform(self.run_in, float(lay.start[0]), size=count),
+            aim_y=self._aim_y(count),
         )
         for k in range(lay.n_mid):
             pending = np.flatnonzero(alive)
@@ -166,7 +168,7 @@ class _Grower:
         xl = rng.integers(0, lay.x_count[k], size=(n, c))
         x = lay.x_of(xl, k)
         dx = px - x  # > 0: the path steps towards the goal
-        ax, ay = self._aim(k, px, walk.join_x[idx, None])
+        ax, ay = self._aim(k, px, walk.join_x[idx, None], walk.aim_y[idx, None])
         taper = min(1.0, max(0.2, (lay.n_mid - 1 - k) / 3.0))
         offset = rng.uniform(-1.0, 1.0, size=(n, c))
         if k == 0 and np.isnan(self.start_slope):
@@ -218,13 +220,23 @@ class _Grower:
             levels[who, -1] = gvl[pick]
         return placed
 
-    def _aim(self, k: int, px: np.ndarray, join_x: np.ndarray) -> tuple[np.ndarray, float]:
+    def _aim_y(self, count: int) -> np.ndarray:
+        """A fifth of the individuals aim wide, anywhere in the y range, until their join_x, so
+        that the population holds detours round walls longer than any local draw reaches."""
+        lay = self.layout
+        wide = self.rng.random(count) < 0.2
+        y = self.rng.uniform(lay.y_lo, lay.y_of(lay.y_count - 1), size=count)
+        return np.where(wide, y, float(lay.goal[1]))
+
+    def _aim(self, k: int, px: np.ndarray, join_x: np.ndarray,
+             aim_y: np.ndarray) -> tuple[np.ndarray, np.ndarray | float]:
         """Aim point (x, y): the goal, or a point on the ramp axis for a recovery."""
         lay = self.layout
         gx, gy = float(lay.goal[0]), float(lay.goal[1])
         if lay.cone_tan is None or k == lay.n_mid - 1:
             return np.full_like(px, gx), gy
-        return np.where(px > join_x + lay.x_res, join_x, self.run_in), gy
+        before = px > join_x + lay.x_res
+        return np.where(before, join_x, self.run_in), np.where(before, aim_y, gy)
 
     def _speed(
         self, pv: np.ndarray, pt: np.ndarray, seg: np.ndarray, ux: Num = 1.0, uy: Num = 0.0,
