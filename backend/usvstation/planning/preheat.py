@@ -17,7 +17,8 @@ the goal; a second draw for a blocked waypoint spreads over every bearing
 the turn limit admits (up to 80 degrees off the x step). A transit aims at
 the goal. A recovery aims at a point on the ramp axis that each individual
 draws between the run-in and the start, and
-follows the axis from there: the population holds paths that join the axis
+follows the axis from there (a fifth of the individuals aim at a random y
+until that point instead, for wide detours round long walls): the population holds paths that join the axis
 early (small malposition, Fit_mal) and late (short, Fit_d). Half of the
 individuals keep the admissible candidate closest to the aim (near-straight
 paths that detour only where they must), the other half a random admissible
