@@ -18,8 +18,9 @@ the turn limit admits (up to 80 degrees off the x step). A transit aims at
 the goal. A recovery aims at a point on the ramp axis that each individual
 draws between the run-in and the start, and
 follows the axis from there (a fifth of the individuals aim at a random y
-until that point instead, for wide detours round long walls): the population holds paths that join the axis
-early (small malposition, Fit_mal) and late (short, Fit_d). Half of the
+until that point instead, for wide detours round long walls): the
+population holds paths that join the axis early (small malposition,
+Fit_mal) and late (short, Fit_d). Half of the
 individuals keep the admissible candidate closest to the aim (near-straight
 paths that detour only where they must), the other half a random admissible
 one (wide detours on either side). Three quarters of the candidate speeds
