@@ -62,6 +62,9 @@ def build_parser() -> argparse.ArgumentParser:
                       help="random seed (default: the scenario's, else 1)")
     plan.add_argument("--json", action="store_true", help="print the plan as JSON")
     plan.add_argument("--out", type=Path, help="also write the plan JSON to this file")
+    plan.add_argument("--time-budget", type=float, default=None, metavar="S",
+                      help="wall-clock budget in seconds (planner.time_budget_s, default 5): "
+                      "past it the best valid plan so far, with a warning, or exit 3")
     plan.add_argument(
         "--set", dest="settings", action="append", default=[], type=_parse_setting,
         metavar="KEY=VALUE", help="override a planner option, e.g. --set population=120",
@@ -198,12 +201,23 @@ def main(argv: list[str] | None = None) -> int:
 def _cmd_plan(args: argparse.Namespace) -> int:
     from pydantic import ValidationError
 
-    from usvstation.planning.plan import NoFeasiblePlan, plan_scenario
     from usvstation.scenario import ScenarioError, format_validation_error, load_scenario
 
-    try:
+    try:  # validate input before NumPy and SciPy are imported, so bad input fails fast
         scenario = load_scenario(args.scenario)
-        plan = plan_scenario(scenario, planner=args.planner, seed=args.seed, **dict(args.settings))
+        overrides = dict(args.settings)
+        if args.time_budget is not None:
+            overrides["time_budget_s"] = args.time_budget
+        scenario.planner_options(**overrides)
+    except ScenarioError as exc:
+        raise CliError(f"invalid scenario: {exc}", EXIT_INVALID) from None
+    except ValidationError as exc:
+        raise CliError(f"invalid option: planner.{format_validation_error(exc)}",
+                       EXIT_INVALID) from None
+    from usvstation.planning.plan import NoFeasiblePlan, plan_scenario
+
+    try:
+        plan = plan_scenario(scenario, planner=args.planner, seed=args.seed, **overrides)
     except ScenarioError as exc:
         raise CliError(f"invalid scenario: {exc}", EXIT_INVALID) from None
     except ValidationError as exc:
