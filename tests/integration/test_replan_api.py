@@ -53,7 +53,7 @@ def test_plan_from_the_boats_latest_telemetry(station):
 
 def test_from_boat_without_telemetry_is_one_clear_line():
     """The route answers 409 with this ValueError's text (no boat position yet)."""
-    with pytest.raises(ValueError, match="^from_boat: no telemetry with a ramp-frame position"):
+    with pytest.raises(ValueError, match=r"^from_boat: no telemetry with a ramp-frame position"):
         scenario_from_boat(load_scenario("case1"), None, None)
-    with pytest.raises(ValueError, match="^from_boat: no telemetry"):
+    with pytest.raises(ValueError, match=r"^from_boat: no telemetry"):
         scenario_from_boat(load_scenario("case1"), {"x": None, "ramp_heading_deg": None}, 3.0)
