@@ -65,8 +65,10 @@ def episode_scenario(rng: np.random.Generator, ship_speed: float) -> Scenario:
     return parse_scenario({
         "name": "live-episode", "origin": {"lat": 30.5, "lon": 122.0, "ramp_bearing_deg": 180.0},
         "start": {"x": float(rng.uniform(70, 90)), "y": float(rng.uniform(-15, 15)),
-                  "heading_deg": 180.0, "speed": 1.0},
-        "vessel": {"length": 1.2, "speed_min": 0.2, "speed_max": 1.5, "accel_max": 0.5,
+                  "heading_deg": 180.0, "speed": 0.5},
+        # the boat that sails it: the Otter (2 m), planned at most 80 % of its 3.09 m/s top
+        # speed through the water; the ship's way takes 1-2 m/s of that (issue 12's rule)
+        "vessel": {"length": 2.0, "speed_min": 0.2, "speed_max": 2.47, "accel_max": 0.5,
                    "turn_max_deg": 60.0, "compensation_radius": 1.0},
         # the ship makes way along -x (the ramp points astern): water flows to +x past it
         "environment": {"current_speed": ship_speed, "current_dir_deg": 0.0},
