@@ -6,7 +6,7 @@ sys.path.insert(0, str(Path(__file__).parent / "integration"))
 
 # Hypothesis: no per-example deadline. A deadline is a wall-clock assertion, and the suite
 # must pass on a loaded 2-core machine (timings belong to `usv-station bench`).
-from hypothesis import settings  # noqa: E402
+from hypothesis import settings
 
 settings.register_profile("station", deadline=None)
 settings.load_profile("station")
