@@ -125,6 +125,9 @@ class ActiveMission:
         return self.begin.mission_id
 
 
+MAX_CATCH_UP_S = 1.0  # link-clock seconds of missed TELEMETRY frames sent late, not skipped
+
+
 class BoatProtocol:
     """The simulated boat's protocol engine: feed bytes and time in, take bytes out."""
 
@@ -338,10 +341,22 @@ class BoatProtocol:
 
     # ---- time
     def update(self, now: float) -> None:
-        """Advance to link time `now`: vehicle, guidance expiry, failsafe, periodic frames."""
-        dt_link = max(0.0, now - self.last_now)
-        self.last_now = now
-        self._advance_vehicle(dt_link * self.cfg.sim_speed)
+        """Advance to link time `now`: vehicle, guidance expiry, failsafe, periodic frames.
+
+        TELEMETRY frames keep a fixed schedule, `started + k * telemetry_period` of the
+        link clock (k/telemetry_hz of boat time): the vehicle is advanced to each due
+        instant and sampled there, so a late call never shifts the grid. After a stall
+        longer than MAX_CATCH_UP_S the missed frames are skipped, the grid kept.
+        """
+        period = self.telemetry_period
+        behind = now - self.next_telemetry
+        if behind > MAX_CATCH_UP_S:
+            self.next_telemetry += math.floor(behind / period) * period
+        while self.next_telemetry <= now:
+            self._advance_to(self.next_telemetry)
+            self._send(self.telemetry())
+            self.next_telemetry += period
+        self._advance_to(now)
         if self.mode == m.Mode.GUIDED and now >= self.guidance_until:
             self.vehicle.clear_guidance()
             self.mode = m.Mode.AUTO if self.state == m.State.RUNNING else m.Mode.STANDBY
@@ -352,10 +367,6 @@ class BoatProtocol:
         if self.linked and now - self.last_rx > self.cfg.failsafe_timeout_s:
             self._link_lost(now, f"no frame from the station for "
                                  f"{self.cfg.failsafe_timeout_s:.1f} s")
-        if now >= self.next_telemetry:
-            self._send(self.telemetry())
-            period = self.telemetry_period
-            self.next_telemetry = max(self.next_telemetry + period, now - period)
         if now >= self.next_heartbeat:
             self._report_state(now)
 
@@ -375,6 +386,11 @@ class BoatProtocol:
         else:
             self._text(m.Severity.WARNING, f"link lost: {reason}"[:m.STATUS_TEXT_MAX])
         self._report_state(now)
+
+    def _advance_to(self, now: float) -> None:
+        dt_link = max(0.0, now - self.last_now)
+        self.last_now = max(self.last_now, now)
+        self._advance_vehicle(dt_link * self.cfg.sim_speed)
 
     def _advance_vehicle(self, dt: float) -> None:
         while dt > 1e-12:
@@ -400,7 +416,7 @@ class BoatProtocol:
         lat, lon = self.frame.to_geodetic(s.x + dx, s.y + dy)
         compass = self.frame.heading_to_compass_deg
         return m.Telemetry(
-            time_ms=int(self.boat_time * 1000) & 0xFFFFFFFF,
+            time_ms=round(self.boat_time * 1000) & 0xFFFFFFFF,
             lat_e7=round(float(lat) * 1e7), lon_e7=round(float(lon) * 1e7),
             fix_type=self.gps.fix_type, satellites=self.gps.satellites,
             hdop_c=_clamp(round(self.gps.hdop * 100), 0, 0xFFFF),
