@@ -34,7 +34,8 @@ def test_plan_upload_start_complete_and_export(station):
     done = threading.Event()
 
     def listen():
-        with connect(ws_url) as ws:
+        with connect(ws_url, additional_headers={"Authorization":
+                                                 f"Bearer {station.token}"}) as ws:
             while not done.is_set():
                 try:
                     events.append(json.loads(ws.recv(timeout=0.5)))

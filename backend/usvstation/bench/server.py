@@ -62,7 +62,8 @@ async def websocket_latency(url: str, clients: int, seconds: float) -> dict[str,
     stop = time.monotonic() + seconds
 
     async def client(i: int) -> None:
-        async with connect(url.replace("http", "ws") + "/ws/live", max_size=None) as ws:
+        async with connect(url.replace("http", "ws") + "/ws/live", max_size=None,
+                           additional_headers={"Authorization": f"Bearer {TOKEN}"}) as ws:
             while time.monotonic() < stop:
                 try:
                     text = await asyncio.wait_for(ws.recv(), timeout=1.0)
@@ -90,7 +91,7 @@ async def health_under_planning(url: str, plans_at_once: int, seconds: float) ->
     latencies: list[float] = []
     running_seen: list[int] = []
     stop = time.monotonic() + seconds
-    async with httpx.AsyncClient(base_url=url, timeout=30) as c:
+    async with httpx.AsyncClient(base_url=url, timeout=30, headers=headers) as c:
 
         async def planner(k: int) -> int:
             done = 0
