@@ -190,3 +190,21 @@ def test_api_docs_are_served_from_the_station_itself(station):
     health = spec["paths"]["/api/health"]["get"]["responses"]["200"]["content"]
     assert health["application/json"]["schema"]["$ref"].endswith("/Health")
     assert "delete" in spec["paths"]["/api/plans/{plan_id}"]
+
+
+def test_3d_view_is_proxied_behind_the_token_and_viser_listens_on_loopback(station):
+    assert urlsplit(station.viser_url).hostname == "127.0.0.1"
+    c = station.client
+    page = c.get("/3d/")
+    assert page.status_code == 200 and "text/html" in page.headers["content-type"]
+    assert c.get("/3d/", headers={"Authorization": ""}).status_code == 401
+    ws_url = station.url.replace("http", "ws") + "/3d/"
+    from viser import __version__ as viser_version
+
+    with connect(ws_url, origin=station.url, open_timeout=30,
+                 subprotocols=[f"viser-v{viser_version}"],
+                 additional_headers={"Authorization": f"Bearer {VIEWER}"}) as ws:
+        assert ws.subprotocol == f"viser-v{viser_version}"
+        assert ws.recv(timeout=30)  # viser's first scene message
+    with pytest.raises(InvalidStatus):
+        connect(ws_url, open_timeout=30)

@@ -27,6 +27,7 @@ from usvstation import __version__
 from usvstation.api.auth import require_operator, require_viewer
 from usvstation.api.console import default_frontend_dir, mount_console, mount_docs
 from usvstation.api.guard import Guard, GuardConfig
+from usvstation.api.view3d import mount_view3d
 from usvstation.scenario import Scenario
 from usvstation.services.boat import BoatError
 from usvstation.services.export import FORMATS, export_chunks, planned_route
@@ -354,6 +355,7 @@ def create_app(station: Station) -> FastAPI:
 
     frontend = station.settings.frontend_dir or default_frontend_dir()
     mount_docs(app, frontend)
+    mount_view3d(app, lambda: station.view.port)
     mount_console(app, frontend)
     return app
 
