@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 import re
 import socket
+import time
 from urllib.parse import urlsplit
 
 import httpx
@@ -24,7 +25,7 @@ MB = 1 << 20
 @pytest.fixture(scope="module")
 def station(tmp_path_factory):
     st = StationProcess(tmp_path_factory.mktemp("data"), "--viewer-token", VIEWER,
-                        "--sim-speed", "5")
+                        "--sim-speed", "5", env={"USV_STATION_HEADER_TIMEOUT_S": "2"})
     yield st
     st.stop()
 
@@ -126,6 +127,10 @@ def test_websocket_needs_a_token_and_the_stations_origin(station):
         with connect(ws_url, origin=station.url, open_timeout=30,
                      additional_headers={"Authorization": f"Bearer {token}"}) as ws:
             assert json.loads(ws.recv(timeout=30))["type"] == "hello"
+            if token == VIEWER:  # outlives the 2 s header timeout of this station
+                time.sleep(3)
+                for _ in range(3):
+                    assert json.loads(ws.recv(timeout=30))["type"]
 
 
 def test_a_foreign_host_header_is_refused(station):
@@ -170,6 +175,9 @@ def test_half_open_connections_leave_the_station_answering(station):
             idle.append(s)
         for _ in range(5):
             assert station.client.get("/api/health").json()["status"] == "ok"
+        # the station closes a connection whose headers never complete (2 s here)
+        idle[1].settimeout(30)
+        assert idle[1].recv(1024) == b""
     finally:
         for s in idle:
             s.close()
