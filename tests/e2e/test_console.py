@@ -160,6 +160,7 @@ def test_api_errors_show_next_to_their_control(page, station):
     page.fill("#token", station.token)
     page.click("#token-form button")
     expect(page.locator("#live-state")).to_have_text("live: connected", timeout=30_000)
+    page.reload()  # the cookie now set, the console loads what it could not read before
     page.click("#plan")  # planning works; with no verified mission, START is refused
     expect(page.locator("[data-metric=length_m] dd")).to_be_visible(timeout=30_000)
     page.click("#cmd-start")

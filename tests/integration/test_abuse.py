@@ -214,5 +214,9 @@ def test_3d_view_is_proxied_behind_the_token_and_viser_listens_on_loopback(stati
                  additional_headers={"Authorization": f"Bearer {VIEWER}"}) as ws:
         assert ws.subprotocol == f"viser-v{viser_version}"
         assert ws.recv(timeout=30)  # viser's first scene message
+    with connect(ws_url[:-1], origin=station.url, open_timeout=30,  # the client drops the /
+                 subprotocols=[f"viser-v{viser_version}"],
+                 additional_headers={"Authorization": f"Bearer {VIEWER}"}) as ws:
+        assert ws.recv(timeout=30)
     with pytest.raises(InvalidStatus):
         connect(ws_url, open_timeout=30)

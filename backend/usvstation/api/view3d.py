@@ -42,6 +42,10 @@ def mount_view3d(app: FastAPI, viser_port: Callable[[], int | None]) -> None:
         headers = {k: v for k, v in r.headers.items() if k.lower() not in HOP_HEADERS}
         return Response(r.content, status_code=r.status_code, headers=headers)
 
+    @app.websocket("/3d")
+    async def view3d_ws_root(ws: WebSocket) -> None:
+        await view3d_ws(ws, "")  # viser's client drops the trailing slash of its page URL
+
     @app.websocket("/3d/{path:path}")
     async def view3d_ws(ws: WebSocket, path: str) -> None:
         from websockets.asyncio.client import connect
