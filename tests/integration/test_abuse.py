@@ -25,7 +25,8 @@ MB = 1 << 20
 @pytest.fixture(scope="module")
 def station(tmp_path_factory):
     st = StationProcess(tmp_path_factory.mktemp("data"), "--viewer-token", VIEWER,
-                        "--sim-speed", "5", env={"USV_STATION_HEADER_TIMEOUT_S": "2"})
+                        "--sim-speed", "5", "--max-ws-clients", "3",
+                        env={"USV_STATION_HEADER_TIMEOUT_S": "2"})
     yield st
     st.stop()
 
@@ -220,3 +221,18 @@ def test_3d_view_is_proxied_behind_the_token_and_viser_listens_on_loopback(stati
         assert ws.recv(timeout=30)
     with pytest.raises(InvalidStatus):
         connect(ws_url, open_timeout=30)
+
+
+def test_live_clients_beyond_the_limit_get_503(station):
+    ws_url = station.url.replace("http", "ws") + "/ws/live"
+    auth = {"Authorization": f"Bearer {VIEWER}"}
+    clients = [connect(ws_url, open_timeout=30, additional_headers=auth) for _ in range(3)]
+    try:
+        for ws in clients:
+            assert json.loads(ws.recv(timeout=30))["type"] == "hello"
+        with pytest.raises(InvalidStatus) as refused:
+            connect(ws_url, open_timeout=30, additional_headers=auth)
+        assert refused.value.response.status_code == 503
+    finally:
+        for ws in clients:
+            ws.close()

@@ -7,6 +7,7 @@ retry backoff set the pace), not performance assertions.
 from __future__ import annotations
 
 import contextlib
+import json
 import os
 import signal
 import socket
@@ -17,6 +18,7 @@ from pathlib import Path
 
 import pytest
 from stationproc import TOKEN, StationProcess
+from websockets.sync.client import connect
 
 from usvstation.scenario import load_scenario
 from usvstation.serveproc import SCRIPT
@@ -117,6 +119,19 @@ def test_full_filesystem_degrades_then_resumes(small_fs):
         h = wait_for(lambda: (h := health(st))["status"] == "degraded" and h, 60,
                      "degraded health")
         assert "full" in h["telemetry_writer"]["error"]
+        # a live client that connects now hears it too
+        with connect(st.url.replace("http", "ws") + "/ws/live", open_timeout=30,
+                     additional_headers={"Authorization": f"Bearer {TOKEN}"}) as ws:
+            deadline = time.monotonic() + 30
+            while time.monotonic() < deadline:
+                event = json.loads(ws.recv(timeout=30))
+                said = event["data"].get("health") if event["type"] == "hello" else \
+                    event["data"] if event["type"] == "health" else None
+                if said and said["status"] == "degraded":
+                    break
+            else:
+                raise AssertionError("no degraded health on the websocket")
+            assert "full" in said["reasons"][0]
         filler.unlink()
         received = health(st)["telemetry_writer"]["received"]
         wait_for(lambda: health(st)["telemetry_writer"]["committed"] >= received, 20,

@@ -340,8 +340,11 @@ def create_app(station: Station) -> FastAPI:
         await ws.accept()
         sub = station.hub.subscribe()
         try:
+            h = station.health()
             await ws.send_json({"type": "hello",
-                                "data": {"version": __version__, **station.boat.snapshot()}})
+                                "data": {"version": __version__, **station.boat.snapshot(),
+                                         "health": {"status": h["status"],
+                                                    "reasons": h["reasons"]}}})
             sender = asyncio.create_task(_pump(ws, sub))
             receiver = asyncio.create_task(_drain(ws))
             _, pending = await asyncio.wait({sender, receiver},
