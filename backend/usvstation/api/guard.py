@@ -59,8 +59,8 @@ class GuardConfig:
 
 def needed_role(path: str, method: str) -> Role | None:
     """The role a request needs from its path and method alone (None: open)."""
-    if path == "/api/health":
-        return None
+    if path == "/api/health" or method == "OPTIONS":
+        return None  # OPTIONS: CORS preflights carry no token and return no data
     if path.startswith(("/api/", "/ws/", "/3d")) or path in ("/api", "/ws"):
         return Role.VIEWER if method in SAFE_METHODS else Role.OPERATOR
     return None
