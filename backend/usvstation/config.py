@@ -43,7 +43,7 @@ class Settings(BaseSettings):
     header_timeout_s: float = Field(10.0, gt=0.0, le=300.0)
     keep_alive_s: float = Field(5.0, gt=0.0, le=300.0)
     plan_timeout_s: float = Field(10.0, gt=0.0, le=3600.0)
-    plan_memory_mb: int = Field(2048, ge=256, le=1 << 20)
+    plan_memory_mb: int = Field(2048, ge=512, le=1 << 20)
     plan_queue: int = Field(32, ge=1, le=10_000)
     frontend_dir: Path | None = Field(
         None, description="operator console files (index.html, app/, node_modules/); "
