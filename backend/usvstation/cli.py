@@ -97,8 +97,24 @@ def build_parser() -> argparse.ArgumentParser:
                        help="memory limit of a plan worker (default 2048 MB)")
     serve.add_argument("--plan-queue", type=int,
                        help="plans queued or running at most (default 32; then 429)")
+    serve.add_argument("--charts", dest="charts_dir", type=Path,
+                       help="folder of offline chart packages (*.mbtiles) for the console's map")
     serve.add_argument("--sim-speed", type=float,
                        help="simulated boat time runs this many times faster (default 1)")
+    serve.add_argument("--nmea", action="append", metavar="URL",
+                       help="ship sensors, NMEA 0183 and AIS (repeatable): udp://0.0.0.0:10110, "
+                       "tcp://HOST:PORT, serial:///dev/ttyUSB0?baud=38400 or a device path")
+    serve.add_argument("--replan", choices=["auto", "confirm", "off"],
+                       help="on a warning: re-plan and swap (auto), propose a re-plan for the "
+                       "operator to confirm (confirm, default) or only alert (off)")
+    # usv-link 2 (issue 11): pairing and signing
+    serve.add_argument("--boat-id", type=int,
+                       help="MAVLink system id of the paired boat (default 1; station is 255)")
+    serve.add_argument("--link-key", type=Path, metavar="PATH",
+                       help="32-byte signing key file (usv-station link-key new PATH); with the "
+                       "simulated boat default: generated into the data dir")
+    serve.add_argument("--insecure-link", action="store_true", default=None,
+                       help="unsigned link (anyone with a radio can command the boat)")
 
     sim = sub.add_parser(
         "sim", help="run the simulated boat on a serial port",
@@ -128,9 +144,24 @@ def build_parser() -> argparse.ArgumentParser:
                      help="waves of this sea state running with the scenario's wind (default 0)")
     sim.add_argument("--duration", type=float, default=None,
                      help="stop after this many seconds (default: run until interrupted)")
+    sim.add_argument("--boat-id", type=int, default=1, help="boat system id (default 1)")
+    sim.add_argument("--station-id", type=int, default=255,
+                     help="system id of the paired station (default 255)")
+    sim.add_argument("--link-key", type=Path, metavar="PATH",
+                     help="signing key file shared with the station")
+    sim.add_argument("--insecure-link", action="store_true",
+                     help="accept unsigned frames (only without --link-key)")
+    sim.add_argument("--nv-file", type=Path, metavar="PATH",
+                     help="the boat's non-volatile memory (signing replay floor) across "
+                     "restarts, like the STM32's flash")
+
+    link_key = sub.add_parser("link-key", help="manage usv-link signing keys")
+    link_key_sub = link_key.add_subparsers(dest="key_command", required=True)
+    key_new = link_key_sub.add_parser("new", help="write a new random 32-byte key (mode 0600)")
+    key_new.add_argument("path", type=Path, help="key file to create (must not exist)")
 
     bench = sub.add_parser("bench", help="run a benchmark and print its figures")
-    bench.add_argument("name", choices=["planner", "tracking", "link", "server"],
+    bench.add_argument("name", choices=["planner", "tracking", "link", "server", "live"],
                        help="which benchmark")
     bench.add_argument("--json", action="store_true", help="print one JSON object (default)")
     bench.add_argument("--scenarios", type=Path, help="folder of scenarios (default: public suite)")
@@ -139,6 +170,8 @@ def build_parser() -> argparse.ArgumentParser:
                        help="random scenarios for the validity rate (default 100, 0 to skip)")
     bench.add_argument("--quick", action="store_true",
                        help="fewer repetitions, for a smoke test (figures not for the record)")
+    bench.add_argument("--episodes", type=int, default=50,
+                       help="live: seeded episodes of the simulated sea (default 50)")
     bench.add_argument("--markdown", type=Path, metavar="JSON",
                        help="print the tables for RESULTS.md from a saved --json result")
     return parser
@@ -156,6 +189,8 @@ def main(argv: list[str] | None = None) -> int:
             return _cmd_bench(args)
         if args.command == "sim":
             return _cmd_sim(args)
+        if args.command == "link-key":
+            return _cmd_link_key(args)
     except CliError as exc:
         print(f"usv-station {args.command}: {exc}", file=sys.stderr)
         return exc.code
@@ -223,15 +258,18 @@ def format_plan(plan: dict[str, Any]) -> str:
 def _cmd_serve(args: argparse.Namespace) -> int:
     from pydantic import ValidationError
 
-    from usvstation.config import ExposureError, Settings
+    from usvstation.config import ExposureError, LinkKeyError, Settings
     from usvstation.scenario import format_validation_error
 
     flags = {k: getattr(args, k) for k in ("host", "port", "link", "baud", "data_dir", "token",
-                                           "viser_port", "sim_speed", "viewer_token",
-                                           "allowed_hosts", "allowed_origins", "max_body_bytes",
-                                           "max_ws_clients", "plan_timeout_s", "plan_memory_mb",
-                                           "plan_queue")
+                                           "viser_port", "sim_speed", "nmea", "replan",
+                                           "boat_id", "link_key", "insecure_link",
+                                           "viewer_token", "allowed_hosts", "allowed_origins",
+                                           "max_body_bytes", "max_ws_clients", "plan_timeout_s",
+                                           "plan_memory_mb", "plan_queue")
              if getattr(args, k, None) is not None}
+    if args.charts_dir is not None:
+        flags["charts_dir"] = args.charts_dir
     try:
         settings = Settings(**flags)
     except ValidationError as exc:
@@ -241,6 +279,8 @@ def _cmd_serve(args: argparse.Namespace) -> int:
     try:
         return serve(settings, announce=lambda msg: print(msg, flush=True))
     except (ExposureError, StartError) as exc:
+        raise CliError(str(exc), EXIT_INVALID) from None
+    except LinkKeyError as exc:
         raise CliError(str(exc), EXIT_INVALID) from None
 
 
@@ -255,7 +295,29 @@ def _cmd_sim(args: argparse.Namespace) -> int:
         raise CliError(str(exc), EXIT_INVALID) from None
 
 
+def _cmd_link_key(args: argparse.Namespace) -> int:
+    from usvstation.link.wire import write_key
+
+    try:
+        write_key(args.path)
+    except FileExistsError:
+        raise CliError(f"{args.path} exists; refusing to overwrite a key", EXIT_INVALID) from None
+    except OSError as exc:
+        raise CliError(f"cannot write {args.path}: {exc.strerror}", EXIT_INVALID) from None
+    print(f"wrote a new link key to {args.path}; give the same file to the boat")
+    return EXIT_OK
+
+
 def _cmd_bench(args: argparse.Namespace) -> int:
+    if args.name == "live":
+        from usvstation.bench.live import run_live_bench
+
+        if args.episodes < 1:
+            raise CliError(f"--episodes: must be at least 1 (got {args.episodes})", EXIT_INVALID)
+        result = run_live_bench(episodes=args.episodes,
+                                progress=lambda msg: print(msg, file=sys.stderr, flush=True))
+        print(json.dumps(result, indent=2))
+        return EXIT_OK
     if args.name == "server":
         from usvstation.bench.server import run_server_bench
 

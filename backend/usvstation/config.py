@@ -7,8 +7,9 @@ import os
 import secrets
 import socket
 from pathlib import Path
+from typing import Literal
 
-from pydantic import Field
+from pydantic import Field, field_validator
 from pydantic_settings import BaseSettings, SettingsConfigDict
 
 MIN_TOKEN_LENGTH = 16
@@ -45,9 +46,30 @@ class Settings(BaseSettings):
     plan_timeout_s: float = Field(10.0, gt=0.0, le=3600.0)
     plan_memory_mb: int = Field(2048, ge=512, le=1 << 20)
     plan_queue: int = Field(32, ge=1, le=10_000)
+    nmea: list[str] = Field(
+        default_factory=list, description="ship-input sources (NMEA 0183, AIS): "
+        "udp://HOST:PORT, tcp://HOST:PORT, serial:///dev/DEVICE?baud=N or a device path")
+    replan: Literal["auto", "confirm", "off"] = Field(
+        "confirm", description="on a warning: re-plan and swap (auto), propose (confirm), "
+        "or only alert (off)")
+    boat_id: int = Field(1, ge=1, le=254, description="MAVLink system id of the paired boat")
+    station_id: int = Field(255, ge=1, le=255, description="this station's MAVLink system id")
+    link_key: Path | None = Field(None, description="usv-link signing key file (32 bytes hex)")
+    insecure_link: bool = Field(False, description="unsigned link: explicit opt-in only")
     frontend_dir: Path | None = Field(
         None, description="operator console files (index.html, app/, node_modules/); "
         "default: frontend/ of the source checkout")
+    charts_dir: Path | None = Field(
+        None, description="folder of offline chart packages (*.mbtiles) served at /api/charts")
+
+    @field_validator("nmea")
+    @classmethod
+    def _nmea_urls(cls, urls: list[str]) -> list[str]:
+        from usvstation.shipinputs.readers import parse_source
+
+        for url in urls:
+            parse_source(url)
+        return urls
 
 
 class ExposureError(ValueError):
@@ -97,3 +119,33 @@ def resolve_token(settings: Settings) -> str:
                 f"use at least {MIN_TOKEN_LENGTH}"
             )
     return token
+
+
+class LinkKeyError(ValueError):
+    """The link's signing settings are contradictory or the key file is unusable."""
+
+
+def resolve_link_key(settings: Settings) -> bytes | None:
+    """The usv-link signing key: --link-key, else with the simulated boat a key generated
+    in data_dir (link.key), so signing is on by default; None only with --insecure-link."""
+    from usvstation.link.wire import read_key, write_key
+
+    if settings.insecure_link:
+        if settings.link_key is not None:
+            raise LinkKeyError("--link-key and --insecure-link contradict each other")
+        return None
+    if settings.boat_id == settings.station_id:
+        raise LinkKeyError(f"boat_id and station_id are both {settings.boat_id}")
+    path = settings.link_key
+    if path is None:
+        if settings.link != "sim":
+            raise LinkKeyError("a boat link needs --link-key PATH (usv-station link-key new "
+                               "PATH) or, knowingly, --insecure-link")
+        path = settings.data_dir / "link.key"
+        if not path.exists():
+            settings.data_dir.mkdir(parents=True, exist_ok=True)
+            write_key(path)
+    try:
+        return read_key(path)
+    except OSError as exc:
+        raise LinkKeyError(f"link key {path}: {exc.strerror}") from None

@@ -16,6 +16,7 @@ from typing import Annotated, Any, Literal
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
 from usvstation.planning.options import IGAOptions
+from usvstation.world.ships import MotherShip, TrafficShip
 
 _STRICT = ConfigDict(extra="forbid", strict=True, allow_inf_nan=False)
 
@@ -106,6 +107,8 @@ class Scenario(BaseModel):
     vessel: Vessel = Field(default_factory=Vessel)
     environment: Environment = Field(default_factory=Environment)
     planner: IGAOptions | None = None
+    mother_ship: MotherShip | None = None  # a moving ramp, for the simulated sea
+    traffic: list[TrafficShip] = Field(default_factory=list, max_length=100)  # other vessels
 
     @model_validator(mode="after")
     def _geometry(self) -> Scenario:

@@ -11,10 +11,15 @@ from typing import Any
 
 from usvstation.api.auth import Tokens
 from usvstation.config import ExposureError, Settings, resolve_token
+from usvstation.link.protocol import BoatReport
 from usvstation.scenario import Origin, Scenario, bundled_scenario_dir, parse_scenario
+from usvstation.services.alerts import LinkAlerts
 from usvstation.services.boat import BoatService
 from usvstation.services.hub import LiveHub
+from usvstation.services.monitor import MonitorService
 from usvstation.services.plans import PlanService
+from usvstation.services.world import WorldService
+from usvstation.store.alerts import AlertStore
 from usvstation.store.db import Store
 from usvstation.viz.view import ThreeDView
 
@@ -85,6 +90,12 @@ class Station:
         self._watch: asyncio.Task | None = None
         self.started = self.stopped = False
         self.boat = BoatService(settings, self.store, self.hub, self.plans, self.view)
+        self.world = WorldService(self.hub, settings.nmea, simulate=settings.link == "sim",
+                                  sim_speed=settings.sim_speed)
+        self.alerts = AlertStore(self.store)
+        self.monitor = MonitorService(self.hub, self.alerts, self.world, self.boat, self.plans,
+                                      settings.replan)
+        self.link_alerts = LinkAlerts(self.monitor.raise_alert)
 
     async def start(self) -> None:
         """Start everything (once; the server's lifespan calls it again harmlessly)."""
@@ -103,8 +114,20 @@ class Station:
                         "link uses the default origin %.6f, %.6f, ramp bearing %.1f deg",
                         scenario.name, origin.lat, origin.lon, origin.ramp_bearing_deg)
             scenario = scenario.model_copy(update={"origin": origin})
+        await self.world.start(scenario)
         await self.boat.start(scenario)
+        if self.boat.link is not None:
+            self.boat.link.add_listener(self.link_alerts.on_link_event)
+            self.boat.link.add_listener(self._publish_heartbeat)
         self._watch = asyncio.get_running_loop().create_task(self._watch_health())
+
+    def _publish_heartbeat(self, ev: object) -> None:
+        """Each boat report (USV_MISSION_STATE, about 1 Hz) to the live clients with the
+        link's counters (as in GET /api/boat `link`), so no console polls for them."""
+        if isinstance(ev, BoatReport):
+            rep = ev.report
+            self.hub.publish("heartbeat", {"state": rep.state, "mission_id": rep.active_id,
+                                           "link": self.boat.snapshot()["link"]})
 
     async def stop(self) -> None:
         """Close the link, stop plan workers, flush telemetry; the boat is sent nothing."""
@@ -114,6 +137,8 @@ class Station:
         if self._watch is not None:
             self._watch.cancel()
         self.lag.stop()
+        await self.monitor.stop()
+        await self.world.stop()
         await self.boat.stop()
         await asyncio.to_thread(self.view.stop)
         await self.plans.stop()
@@ -149,6 +174,7 @@ class Station:
         await asyncio.to_thread(self.store.set_setting, "scenario",
                                 scenario.model_dump(mode="json"))
         self.view.show_scenario(scenario)
+        await self.world.use_scenario(scenario)
         self.hub.publish("scenario", {"name": scenario.name})
 
     def health(self) -> dict[str, Any]:

@@ -168,6 +168,16 @@ function boatIcon() {
   });
 }
 
+function replayIcon() {
+  return L.divIcon({
+    className: 'replay-boat',
+    iconSize: [28, 28],
+    iconAnchor: [14, 14],
+    html: '<svg class="boat-glyph" viewBox="-14 -14 28 28" width="28" height="28" aria-hidden="true">'
+      + '<path d="M0,-12 L7,9 L0,5 L-7,9 Z" fill="none" stroke="#c53030" stroke-width="2"/></svg>',
+  });
+}
+
 function handleIcon(label, cls) {
   return L.divIcon({ className: `map-handle ${cls}`, iconSize: [22, 22], iconAnchor: [11, 11],
     html: `<span>${label}</span>` });
@@ -212,6 +222,7 @@ export class ConsoleMap {
     this.trackLayer = L.layerGroup([this.trackLine]).addTo(this.map);
     this.boatLayer = L.layerGroup().addTo(this.map);
     this.startLayer = L.layerGroup().addTo(this.map);
+    this.overlayLayer = L.layerGroup().addTo(this.map);
     this.layersControl = L.control.layers(this.baseLayers, {
       Ramp: this.rampLayer,
       Obstacles: this.obstacleLayer,
@@ -227,7 +238,7 @@ export class ConsoleMap {
     this.trackLatLngs = [];
     this.map.on('click', (e) => {
       const [x, y] = this.frame.toRamp(e.latlng.lat, e.latlng.lng);
-      this.handlers.onClick?.(x, y);
+      this.handlers.onClick?.(x, y, e.latlng);
     });
     this.map.setView([0, 0], 18);
   }
@@ -277,6 +288,52 @@ export class ConsoleMap {
     this.layersControl.addBaseLayer(this.tiles, `Online map (${host}) + grid`);
     this.map.removeLayer(this.grid);
     this.tiles.addTo(this.map);
+  }
+
+  /** An offline chart package from the station (GET /api/charts), or null for none. */
+  setChart(pkg) {
+    if (this.chart) {
+      this.layersControl.removeLayer(this.chart);
+      this.map.removeLayer(this.chart);
+      this.chart = null;
+    }
+    if (!pkg) return;
+    const opts = { maxZoom: 24, className: 'chart-tiles',
+      attribution: pkg.attribution ?? `chart: ${pkg.title}` };
+    if (pkg.maxzoom != null) opts.maxNativeZoom = pkg.maxzoom;
+    if (pkg.minzoom != null) opts.minNativeZoom = pkg.minzoom;
+    if (pkg.bounds) {
+      const [w, south, e, n] = pkg.bounds;
+      opts.bounds = L.latLngBounds([south, w], [n, e]);
+    }
+    this.chart = L.tileLayer(pkg.tiles, opts);
+    this.layersControl.addOverlay(this.chart, `Offline chart: ${pkg.title}`);
+    this.chart.addTo(this.map);
+  }
+
+  /** The shown run's boat at the displayed time (replay), or none. */
+  setReplayBoat(row) {
+    if (!row || row.lat == null) {
+      if (this.replayMarker) {
+        this.replayMarker.remove();
+        this.replayMarker = null;
+      }
+      return;
+    }
+    const ll = L.latLng(row.lat, row.lon);
+    if (!this.replayMarker) {
+      this.replayMarker = L.marker(ll, { icon: replayIcon(), keyboard: false, interactive: false,
+        zIndexOffset: 900 }).addTo(this.boatLayer);
+    } else {
+      this.replayMarker.setLatLng(ll);
+    }
+    const glyph = this.replayMarker.getElement()?.querySelector('.boat-glyph');
+    if (glyph) glyph.style.transform = `rotate(${row.heading_deg}deg)`;
+  }
+
+  /** Pan to the boat's last position, if there is one. */
+  centreOnBoat() {
+    if (this.boatMarker) this.map.panTo(this.boatMarker.getLatLng());
   }
 
   drawRamp(axisLength = 150) {
@@ -412,6 +469,16 @@ export class ConsoleMap {
         .addTo(this.smoothedLayer);
     }
     this.setDisplayTime(this.displayT);
+  }
+
+  /** A second plan to compare with, dashed, or none. */
+  setOverlayPlan(plan) {
+    this.overlayLayer.clearLayers();
+    if (!plan) return;
+    L.polyline(plan.waypoints.map((w) => this.ll(w.x, w.y)), { color: '#553c9a', weight: 3,
+      dashArray: '10 6', className: 'overlay-plan' })
+      .bindTooltip(`${plan.planner} plan, seed ${plan.seed}`, { sticky: true })
+      .addTo(this.overlayLayer);
   }
 
   /** Replace the real track with telemetry rows (lat/lon from the boat's GPS). */

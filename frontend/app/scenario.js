@@ -29,6 +29,11 @@ function setPath(obj, path, value) {
   target[last] = value;
 }
 
+/** The station names obstacles by list index (`obstacles[0]`); the table numbers them from 1. */
+export function obstaclesFromOne(message) {
+  return String(message).replace(/obstacles\[(\d+)\]/g, (_, i) => `obstacle ${Number(i) + 1}`);
+}
+
 export class ScenarioEditor {
   constructor({ map, centre, onChange }) {
     this.map = map;
@@ -74,6 +79,7 @@ export class ScenarioEditor {
     this.redraw();
     this.fillForm();
     if (fit) this.map.fitScenario(this.scenario);
+    this.onChange();
   }
 
   reloadIfClean() {
@@ -129,10 +135,16 @@ export class ScenarioEditor {
 
   readNumber(input, label) {
     const v = input.valueAsNumber;
-    if (input.value.trim() === '' || !Number.isFinite(v)) {
+    // "8e" or "1e" typed on the way to a number: Chromium reports an empty value, and the
+    // save planned for the "8" before it must not go out
+    if (input.value.trim() === '' || !Number.isFinite(v) || input.validity.badInput) {
       input.setAttribute('aria-invalid', 'true');
       this.invalid.add(input);
+      clearTimeout(this.timer);
+      this.timer = null;
       $('scenario-error').textContent = `${label}: enter a number`;
+      $('scenario-status').textContent = 'not saved';
+      this.onChange();
       return null;
     }
     input.removeAttribute('aria-invalid');
@@ -208,17 +220,18 @@ export class ScenarioEditor {
 
   save() {
     this.inflight = this.inflight.then(async () => {
+      if (this.invalid.size) return;
       const version = this.version;
       $('scenario-status').textContent = 'saving…';
       try {
         await api.put('/api/scenario', this.scenario);
         this.savedVersion = version;
         this.lastError = null;
-        $('scenario-error').textContent = '';
+        if (!this.invalid.size) $('scenario-error').textContent = '';
         $('scenario-status').textContent = `saved at ${new Date().toLocaleTimeString()}`;
       } catch (err) {
         this.lastError = err;
-        $('scenario-error').textContent = err.message;
+        $('scenario-error').textContent = obstaclesFromOne(err.message);
         $('scenario-status').textContent = 'not saved';
       }
     });

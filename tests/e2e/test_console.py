@@ -95,7 +95,8 @@ def test_plan_upload_run_and_download(page, station, artifacts):
 
     # start: the boat marker moves and its track grows
     before = boat_centre(page)
-    page.click("#cmd-start")
+    page.click("#cmd-start")  # START always asks first
+    page.click("#start-confirm")
     expect(page.locator("#command-result")).to_have_text("START: ACCEPTED, boat RUNNING")
     expect(page.locator("#mission-state")).to_contain_text("active")
     track = page.locator("#track-points")
@@ -103,6 +104,9 @@ def test_plan_upload_run_and_download(page, station, artifacts):
     first = int(track.inner_text())
     page.wait_for_function(f"Number(document.getElementById('track-points').textContent) > "
                            f"{first + 20}", timeout=20_000)
+    # the instruments during the run: behind or ahead of the plan's schedule, cross-track
+    expect(page.locator("#boat-slip")).to_have_text(re.compile(r"^[+-]\d+\.\d$"))
+    expect(page.locator("#boat-xte")).to_have_text(re.compile(r"^-?\d+\.\d$"))
     moved = wait_until_moved(page, before, 40)
     assert math.dist(before, moved) > 40  # pixels, about 4 m at this zoom
     d = page.locator("path.real-track").get_attribute("d")
@@ -164,6 +168,7 @@ def test_api_errors_show_next_to_their_control(page, station):
     page.click("#plan")  # planning works; with no verified mission, START is refused
     expect(page.locator("[data-metric=length_m] dd")).to_be_visible(timeout=30_000)
     page.click("#cmd-start")
+    page.click("#start-confirm")
     expect(page.locator("#command-error")).to_have_text(
         "no verified mission to start: upload a plan first")
     # a start inside an obstacle: the station's reason, next to the scenario editor
@@ -172,7 +177,7 @@ def test_api_errors_show_next_to_their_control(page, station):
     page.fill("#start-y", str(obstacle["y"]))
     expect(page.locator("#scenario-error")).to_contain_text(
         "start: (", timeout=10_000)
-    expect(page.locator("#scenario-error")).to_contain_text("lies inside obstacles[0]")
+    expect(page.locator("#scenario-error")).to_contain_text("lies inside obstacle 1")
     expect(page.locator("#plan-stale")).to_be_visible()
     expect(page.locator("#upload")).to_be_disabled()
     page.click("#plan")

@@ -1,7 +1,7 @@
 """kill -9 of the station while telemetry flows loses at most the last 200 ms; a restart resumes.
 
-The test owns the boat end of a real pty: the simulated boat runs here, and every
-TELEMETRY frame it writes is timestamped, so the frames it sent can be compared
+The test owns the boat end of a real pty: the simulated boat runs here, and every position
+report (GLOBAL_POSITION_INT) it writes is timestamped, so the frames it sent can be compared
 with the rows the killed station left in its database.
 """
 
@@ -14,8 +14,7 @@ import time
 from stationproc import StationProcess
 
 from usvstation.geo import RampFrame
-from usvstation.link import messages as m
-from usvstation.link.codec import FrameDecoder
+from usvstation.link import wire
 from usvstation.link.transport import PtyPair
 from usvstation.scenario import load_scenario
 from usvstation.sim.boat import BoatConfig
@@ -26,10 +25,10 @@ TRANSIT_S = 0.05  # pty, decoding and the event loop between boat and writer
 
 
 class StampingStream:
-    """Wraps the boat's end of the pty; records (time_ms, monotonic send time) per TELEMETRY."""
+    """Wraps the boat's end of the pty; records (time_ms, monotonic send time) per position."""
 
-    def __init__(self, inner):
-        self.inner, self.decoder, self.sent = inner, FrameDecoder(), []
+    def __init__(self, inner, key):
+        self.inner, self.decoder, self.sent = inner, wire.Codec(254, 190, key), []
 
     async def read(self):
         return await self.inner.read()
@@ -37,9 +36,9 @@ class StampingStream:
     async def write(self, data):
         await self.inner.write(data)
         now = time.monotonic()
-        for msg in self.decoder.feed(bytes(data)):
-            if isinstance(msg, m.Telemetry):
-                self.sent.append((msg.time_ms, now))
+        for msg in self.decoder.feed(bytes(data))[0]:
+            if msg.get_type() == "GLOBAL_POSITION_INT":
+                self.sent.append((msg.time_boot_ms, now))
 
     async def close(self):
         await self.inner.close()
@@ -48,7 +47,8 @@ class StampingStream:
 class BoatThread:
     """The simulated boat at 50 Hz telemetry on the master side of a pty, in its own loop."""
 
-    def __init__(self):
+    def __init__(self, key_path):
+        self.key = wire.read_key(key_path)
         self.pair = PtyPair()
         self.stream = None
         self._stop = None
@@ -62,10 +62,10 @@ class BoatThread:
         scenario = load_scenario("case1")
         o = scenario.origin
         boat = make_boat(RampFrame(o.lat, o.lon, o.ramp_bearing_deg),
-                         config=BoatConfig(telemetry_hz=50.0),
+                         config=BoatConfig(telemetry_hz=50.0), key=self.key,
                          vehicle=make_vehicle("kinematic", scenario))
         self._loop, self._stop = asyncio.get_running_loop(), asyncio.Event()
-        self.stream = StampingStream(self.pair.master_stream())
+        self.stream = StampingStream(self.pair.master_stream(), self.key)
         await SimulatedBoat(boat).run(self.stream, self._stop)
 
     def stop(self):
@@ -80,10 +80,12 @@ def stored_boat_times(data_dir) -> set[int]:
 
 
 def test_kill_9_loses_at_most_the_last_200_ms_and_restart_resumes(tmp_path):
-    boat = BoatThread()
+    key = tmp_path / "link.key"
+    wire.write_key(key)
+    boat = BoatThread(key)
     data = tmp_path / "data"
     try:
-        st = StationProcess(data, "--link", boat.pair.slave_path)
+        st = StationProcess(data, "--link", boat.pair.slave_path, "--link-key", str(key))
         deadline = time.monotonic() + 20
         while st.client.get("/api/health").json()["telemetry_writer"]["committed"] < 100:
             assert time.monotonic() < deadline, "no telemetry reached the database"
@@ -108,7 +110,7 @@ def test_kill_9_loses_at_most_the_last_200_ms_and_restart_resumes(tmp_path):
               f"{1000 * (killed_at - last_stored):.0f} ms before the kill")
 
         # a restart resumes on the same data dir and the same link
-        st2 = StationProcess(data, "--link", boat.pair.slave_path)
+        st2 = StationProcess(data, "--link", boat.pair.slave_path, "--link-key", str(key))
         try:
             assert st2.client.get("/api/health").json()["status"] == "ok"
             deadline = time.monotonic() + 10

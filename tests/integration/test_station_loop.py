@@ -47,9 +47,14 @@ def test_plan_upload_start_complete_and_export(station):
 
     boat = c.get("/api/boat").json()
     assert boat["link"]["up"] and boat["link"]["simulated"]
-    # a pty loses and corrupts nothing: the decoder's counters stay at zero
+    # signed by default (a key generated into the data dir), paired with boat 1
+    assert boat["link"]["signed"] and boat["link"]["warning"] is None
+    assert (boat["link"]["boat_id"], boat["link"]["station_id"]) == (1, 255)
+    # a pty loses and corrupts nothing: nothing refused, no other systems
     assert boat["link"]["frames"] > 0
-    assert boat["link"]["frames_lost"] == 0 and boat["link"]["frames_bad"] == 0
+    assert boat["link"]["frames_bad"] == 0 and boat["link"]["refused"] == {}
+    assert boat["link"]["frames_lost"] == 0
+    assert boat["link"]["other_systems"] == {}
     plan_job = station.wait_plan(c.post("/api/plans", json={"seed": 1}).json()["id"])
     assert plan_job["status"] == "done"
     plan = plan_job["plan"]
@@ -62,9 +67,12 @@ def test_plan_upload_start_complete_and_export(station):
     assert mission["state"] == "verified"
     assert mission["progress"] == {"sent": n, "acked": n, "total": n}
 
-    ack = c.post("/api/boat/command", json={"command": "start"})
-    assert ack.status_code == 200
-    assert ack.json()["result"] == "ACCEPTED" and ack.json()["state"] == "RUNNING"
+    verify = c.get(f"/api/missions/{mission['id']}/verify")
+    assert verify.status_code == 200 and verify.json()["identical"]
+    ack = c.post("/api/boat/command", json={"command": "start", "mission_id": mission["id"]})
+    assert ack.status_code == 200, ack.text
+    assert ack.json()["result"] == "ACCEPTED" and ack.json()["mission"] == mission["id"]
+    assert ack.json()["state"] == "RUNNING"
     mission = station.wait(f"/api/missions/{mission['id']}", "state", ("active",),
                            plan["metrics"]["duration_s"] / 5 + 30)
     assert mission["state"] == "completed"
@@ -109,9 +117,12 @@ def test_plan_upload_start_complete_and_export(station):
 
 def test_command_rules(station):
     c = station.client
-    # after a completed mission there is no verified mission to start
+    # START names its mission; a completed one is no longer startable
     r = c.post("/api/boat/command", json={"command": "start"})
     assert r.status_code == 409 and "no verified mission" in r.json()["detail"]
+    for done in [m for m in c.get("/api/missions").json() if m["state"] == "completed"]:
+        r = c.post("/api/boat/command", json={"command": "start", "mission_id": done["id"]})
+        assert r.status_code == 409 and "refused START: WRONG_STATE" in r.json()["detail"]
     r = c.post("/api/boat/command", json={"command": "fly"})
     assert r.status_code == 422
     assert c.post("/api/boat/command", json={"command": "hold"},

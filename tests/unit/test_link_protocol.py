@@ -1,328 +1,340 @@
-"""Sans-IO station and boat state machines over an in-memory link with a simulated clock."""
+"""usv-link 2 state machines, station and boat, on a simulated clock (tests/unit/link_harness)."""
 
 from __future__ import annotations
 
-import math
+import itertools
 
 import pytest
-from link_harness import FRAME, Harness, make_mission, telemetry_count
+from link_harness import KEY, UNIX0, Harness, make_mission
 
-from usvstation.link import messages as m
-from usvstation.link.codec import Encoder, FrameDecoder
-from usvstation.link.mission import MissionError, mission_from_plan, plan_from_mission
+from usvstation.link import wire
+from usvstation.link.mavlink import usv_recovery as mav
 from usvstation.link.protocol import (
     CommandOutcome,
-    DefinitionMismatch,
-    LinkDown,
+    CommandSender,
+    LinkConfig,
     LinkUp,
+    ReadbackResult,
+    RttEstimator,
     StatusTextReceived,
-    UploadProgress,
     UploadResult,
 )
-from usvstation.sim.boat import BoatConfig, BoatProtocol
-from usvstation.sim.vehicle import KinematicVehicle
+from usvstation.sim.boat import BoatConfig
 
 
-def upload(h: Harness, mission, seconds: float = 30.0) -> UploadResult:
-    h.station.start_upload(mission, h.t)
-    assert h.run(seconds, until=lambda: h.station.upload.done)
-    return h.station.upload.result
+def _upload(h: Harness, mission, seconds: float = 30.0, **kw) -> UploadResult:
+    n = len(h.of(UploadResult))
+    h.station.start_upload(mission, h.t, **kw)
+    assert h.run(seconds, until=lambda: len(h.of(UploadResult)) > n)
+    return h.of(UploadResult)[-1]
 
 
-def command(h: Harness, code, mission_id: int = 0) -> CommandOutcome:
-    cid = h.station.send_command(code, h.t, mission_id)
-    h.run(5.0, until=lambda: any(o.command_id == cid for o in h.of(CommandOutcome)))
-    return next(o for o in h.of(CommandOutcome) if o.command_id == cid)
+def _command(h: Harness, name: str, mission=None) -> CommandOutcome:
+    n = len(h.of(CommandOutcome))
+    args = (mission.mission_id, mission.crc) if mission is not None else ()
+    h.station.send_command(name, h.t, *args)
+    assert h.run(20.0, until=lambda: len(h.of(CommandOutcome)) > n)
+    return h.of(CommandOutcome)[-1]
 
 
-def test_handshake_brings_both_sides_up():
+def _texts(h: Harness) -> list[str]:
+    return [e.text for e in h.of(StatusTextReceived)]
+
+
+def _station_frames(h: Harness, key: bytes | None = KEY, system_id: int = 255) -> wire.Codec:
+    """Hand-made station frames on their own signing stream (link id 7)."""
+    return wire.Codec(system_id, wire.STATION_COMPONENT, key, link_id=7,
+                      timestamp=wire.signing_time(UNIX0 + h.t))
+
+
+def test_handshake_brings_both_sides_up_with_the_paired_ids():
     h = Harness()
     h.connect()
-    assert h.of(LinkUp)[0].heartbeat.sender == m.Sender.BOAT
-    assert h.t < 0.1  # the boat answers the first station heartbeat at once
+    assert h.of(LinkUp)[0].system_id == 1
+    assert h.boat.linked and h.station.report.state == "IDLE"
+    assert h.station.report.boot_id == h.boat.boot_id
 
 
-def test_upload_activates_the_identical_mission_with_progress():
+def test_upload_activates_the_identical_mission_and_readback_matches():
     h = Harness()
     h.connect()
-    mission = make_mission(7, 32)
-    res = upload(h, mission)
-    assert res.ok and res.reason == "activated" and res.retransmissions == 0
-    assert h.boat.active.items == mission.items
-    assert h.boat.state == m.State.READY
-    progress = [p.acked for p in h.of(UploadProgress)]
-    assert progress == list(range(0, 33))
-    back = plan_from_mission(mission, FRAME)
-    assert all(abs(b["x"] - w["x"]) < 0.02 and abs(b["y"] - w["y"]) < 0.02
-               for b, w in zip(back, make_plan(), strict=True))
+    m = make_mission(7)
+    res = _upload(h, m)
+    assert res.ok and res.retransmissions == 0
+    assert h.boat.active.items == m.items and h.boat.state == 1  # READY
+    h.run(1.1)
+    assert (h.station.report.active_id, h.station.report.active_crc32) == (m.mission_id, m.crc)
+    h.station.start_readback(m.mission_id, m.count, h.t)
+    assert h.run(5, until=lambda: h.of(ReadbackResult))
+    assert h.of(ReadbackResult)[-1].items == m.items
+    assert h.station.refused == {} and h.boat.refusals == {}  # nothing out of order
 
 
-def make_plan():
-    from link_harness import plan_waypoints
+def test_acks_overtaking_telemetry_keep_signing_timestamps_rising():
+    h = Harness(boat_cfg=BoatConfig(baud=9600, telemetry_hz=20))
+    h.connect()
+    m = make_mission(7)
+    assert _upload(h, m).ok and _command(h, "start", m).accepted
+    h.run(3.0)
+    assert h.station.refused == {}
 
-    return plan_waypoints(32)
 
-
-@pytest.mark.parametrize("seed", range(6))
-@pytest.mark.parametrize("loss", [0.1, 0.2, 0.4])
-def test_lossy_upload_never_activates_a_partial_mission(loss, seed):
+@pytest.mark.parametrize(("loss", "seed"), [(0.1, 1), (0.2, 2), (0.3, 3), (0.5, 4)])
+def test_lossy_uploads_never_activate_a_partial_mission(loss, seed):
     h = Harness(loss=loss, seed=seed)
-    assert h.run(20.0, until=lambda: h.station.link_up and h.boat.linked)
-    mission = make_mission(9, 32)
-    try:
-        res = upload(h, mission, 60.0)
-    except RuntimeError:
-        return  # the link dropped before the upload could start: nothing activated
+    h.connect()
+    m = make_mission(9)
+    res = _upload(h, m, seconds=120)
     if res.ok:
-        assert h.boat.active.items == mission.items
+        assert h.boat.active.items == m.items
     else:
-        assert res.reason
-        assert h.boat.active is None or h.boat.active.items == mission.items
-    if loss <= 0.1:
-        assert res.ok, res.reason
+        assert h.boat.active is None or h.boat.active.items == m.items
 
 
-def _boat_and_station_messages(boat: BoatProtocol, msgs: list, now: float = 0.0) -> list:
-    enc = Encoder()
-    hb = m.Heartbeat(m.DEFINITION_CRC, m.PROTOCOL_VERSION, m.Sender.STATION, 0, 0, 0, 0, 0)
-    boat.receive_data(enc.encode_many([hb, *msgs]), now)
-    return [x for x in FrameDecoder().feed(boat.data_to_send())
-            if isinstance(x, m.MissionAck | m.MissionNak | m.CommandAck)]
-
-
-def _boat() -> BoatProtocol:
-    return BoatProtocol(KinematicVehicle(), FRAME, BoatConfig())
-
-
-def test_duplicates_are_idempotent_and_conflicts_refused():
-    boat, mission = _boat(), make_mission(3, 4)
-    it = mission.items[1]
-    answers = _boat_and_station_messages(
-        boat, [mission.begin(), it, it, mission.begin(), it._replace(speed_cms=1)])
-    assert answers[0] == m.MissionAck(3, m.MissionStage.BEGIN, 0, 0)
-    assert answers[1] == answers[2] == m.MissionAck(3, m.MissionStage.ITEM, 1, 1)
-    assert answers[3] == m.MissionAck(3, m.MissionStage.BEGIN, 0, 1)  # a retry keeps items
-    assert answers[4] == m.MissionNak(3, m.MissionStage.ITEM, 1, m.NakReason.CONFLICT, 1)
-
-
-def test_end_verifies_completeness_and_crc_before_activating():
-    boat, mission = _boat(), make_mission(3, 4)
-    items = list(mission.items)
-    answers = _boat_and_station_messages(boat, [mission.begin(), *items[:3], mission.end()])
-    assert answers[-1] == m.MissionNak(3, m.MissionStage.END, 3, m.NakReason.MISSING_ITEMS, 3)
-    assert boat.active is None
-    bad = items[3]._replace(lat_e7=items[3].lat_e7 + 1)  # corrupted, CRC cannot match
-    answers = _boat_and_station_messages(boat, [bad, mission.end()])
-    assert answers[-1].reason == m.NakReason.CRC_MISMATCH and boat.active is None
-    answers = _boat_and_station_messages(boat, [mission.begin(), *items, mission.end()])
-    assert answers[-1] == m.MissionAck(3, m.MissionStage.END, 0, 4)
-    assert boat.active.items == mission.items
-    # a late duplicate of an item or END of the active mission is acknowledged again
-    answers = _boat_and_station_messages(boat, [items[2], mission.end()])
-    assert [a.stage for a in answers] == [m.MissionStage.ITEM, m.MissionStage.END]
-    assert all(isinstance(a, m.MissionAck) for a in answers)
-
-
-def test_a_new_upload_never_disturbs_the_active_mission_until_verified():
-    boat = _boat()
-    first, second = make_mission(1, 4), make_mission(2, 6)
-    _boat_and_station_messages(boat, [first.begin(), *first.items, first.end()])
-    _boat_and_station_messages(boat, [second.begin(), *second.items[:5], second.end()])
-    assert boat.active.mission_id == 1 and boat.active.items == first.items
-
-
-def test_boat_refuses_uploads_while_running_and_bad_begin():
-    boat, mission = _boat(), make_mission(5, 3)
-    naks = _boat_and_station_messages(boat, [m.MissionBegin(6, 0, 0, 0, 0, 0),
-                                             m.MissionBegin(6, 300, 0, 0, 0, 0),
-                                             m.MissionItem(8, 0, 0, 0, 0, 0, 0)])
-    assert [a.reason for a in naks] == [m.NakReason.BAD_COUNT, m.NakReason.TOO_MANY_ITEMS,
-                                        m.NakReason.UNKNOWN_MISSION]
-    _boat_and_station_messages(boat, [mission.begin(), *mission.items, mission.end()])
-    acks = _boat_and_station_messages(boat, [m.Command(1, m.CommandCode.START, 5),
-                                             mission.begin(), mission.end()])
-    assert acks[0].result == m.CommandResult.ACCEPTED
-    # a new BEGIN is refused while running; a repeated END of the running mission is
-    # acknowledged again (its first ACK may have been lost) without touching anything
-    assert acks[1:] == [m.MissionNak(5, m.MissionStage.BEGIN, 0, m.NakReason.BUSY, 0),
-                        m.MissionAck(5, m.MissionStage.END, 0, 3)]
-    assert boat.state == m.State.RUNNING
-
-
-def test_commands_follow_the_state_table_and_execute_once():
+def test_boat_refuses_short_missions_and_out_of_range_values_naming_the_field():
     h = Harness()
     h.connect()
-    assert command(h, m.CommandCode.START, 7).result == m.CommandResult.NO_MISSION
-    assert upload(h, make_mission(7, 8)).ok
-    assert command(h, m.CommandCode.RESUME).result == m.CommandResult.REJECTED_STATE
-    assert command(h, m.CommandCode.START, 8).result == m.CommandResult.MISSION_MISMATCH
-    out = command(h, m.CommandCode.START, 7)
-    assert out.accepted and out.state == m.State.RUNNING
-    h.run(1.0)
-    assert h.vehicle.state.speed > 0
-    assert command(h, m.CommandCode.HOLD).state == m.State.HOLD
-    x = h.vehicle.state.x
-    h.run(1.0)
-    assert h.vehicle.state.x == x and h.vehicle.state.speed == 0
-    assert command(h, m.CommandCode.RESUME).state == m.State.RUNNING
-    assert command(h, m.CommandCode.ABORT).state == m.State.ABORTED
+    c = _station_frames(h)
+    e = c.mav
+    h.extra_to_boat.append(c.encode(e.usv_mission_begin_encode(1, 1, 5, 0, 1, 0)))
+    h.extra_to_boat.append(c.encode(e.usv_mission_begin_encode(1, 1, 6, 0, 2, 0)))
+    h.extra_to_boat.append(c.encode(e.usv_mission_item_encode(1, 1, 6, 0, 0, 0, 0, 4000, 0, 0)))
+    h.run(0.5)
+    assert "mission 5: count 1 outside 2..256" in _texts(h)
+    assert "item 0: speed_cms 4000 above 3000" in _texts(h)
+    assert h.boat.staging.items == {} and h.boat.active is None
+
+
+def test_end_checks_completeness_and_crc_before_activating():
+    h = Harness()
+    h.connect()
+    m = make_mission(8, n=4)
+    c = _station_frames(h)
+    e = c.mav
+
+    def item(it):
+        return c.encode(e.usv_mission_item_encode(1, 1, it.mission_id, it.seq, it.lat, it.lon,
+                                                  it.t_ms, it.speed_cms, it.course_cdeg,
+                                                  it.heading_cdeg))
+
+    acks = []
+    h.station._handle = lambda msg, now: acks.append(msg) or []  # see the boat's answers
+    h.extra_to_boat.append(c.encode(e.usv_mission_begin_encode(1, 1, 8, m.crc, 4, 0)))
+    h.extra_to_boat += [item(m.items[0]), item(m.items[1]), item(m.items[3])]
+    h.extra_to_boat.append(c.encode(e.usv_mission_end_encode(1, 1, 8, m.crc, 4)))
+    h.run(0.3)
+    end = [a for a in acks if a.get_type() == "USV_MISSION_ACK" and a.stage == 3][-1]
+    assert (end.result, end.seq) == (mav.USV_MISSION_MISSING_ITEMS, 2)
     assert h.boat.active is None
-    assert command(h, m.CommandCode.START, 7).result == m.CommandResult.NO_MISSION
+    h.extra_to_boat.append(item(m.items[2]))
+    h.extra_to_boat.append(c.encode(e.usv_mission_end_encode(1, 1, 8, m.crc ^ 1, 4)))
+    h.run(0.3)
+    end = [a for a in acks if a.get_type() == "USV_MISSION_ACK" and a.stage == 3][-1]
+    assert end.result == mav.USV_MISSION_CRC_MISMATCH and h.boat.active is None
+    h.extra_to_boat.append(c.encode(e.usv_mission_end_encode(1, 1, 8, m.crc, 4)))
+    h.run(0.3)
+    assert h.boat.active.items == m.items
 
 
-def test_a_retried_command_is_executed_once():
-    boat, mission = _boat(), make_mission(5, 3)
-    _boat_and_station_messages(boat, [mission.begin(), *mission.items, mission.end()])
-    start = m.Command(11, m.CommandCode.START, 5)
-    acks = _boat_and_station_messages(boat, [start, m.Command(12, m.CommandCode.HOLD, 0), start])
-    assert acks[0] == acks[2] == m.CommandAck(11, m.CommandCode.START, 0, m.State.RUNNING)
-    assert boat.state == m.State.HOLD  # the repeated START did not run again
-
-
-def test_lost_command_acks_are_retried_then_reported():
+def test_staging_expires_after_30_s_and_abort_clears_it():
     h = Harness()
     h.connect()
-    h.up = False
-    cid = h.station.send_command(m.CommandCode.HOLD, h.t)
-    h.run(2.0)
-    out = [o for o in h.of(CommandOutcome) if o.command_id == cid]
-    assert out and out[0].result is None and "after 5 attempts" in out[0].error
-
-
-def test_link_loss_failsafe_and_recovery_without_restart():
-    h = Harness()
-    h.connect()
-    assert upload(h, make_mission(7, 32)).ok
-    assert command(h, m.CommandCode.START, 7).accepted
-    h.run(2.0)
-    h.up = False
-    t_off, boat_last_rx, station_last_rx = h.t, h.boat.last_rx, h.station.monitor.last_rx
-    assert h.run(4.0, until=lambda: h.boat.failsafe)
-    t_boat = h.t
-    assert h.run(4.0, until=lambda: not h.station.link_up)
-    t_station = h.t
-    # detected within 3.5 s of the radio going off, and not before 3 s of silence
-    assert t_boat - t_off <= 3.5 and t_station - t_off <= 3.5, (t_boat, t_station, t_off)
-    assert t_boat - boat_last_rx >= 3.0 and t_station - station_last_rx >= 3.0
-    assert h.boat.state == m.State.HOLD and h.boat.flags & m.Flag.FAILSAFE
-    assert "failsafe hold" in h.boat.log[-1] or any("failsafe hold" in x for x in h.boat.log)
-    before = telemetry_count(h)
-    h.up = True
-    assert h.run(2.0, until=lambda: h.station.link_up and h.boat.linked)
-    h.run(1.0)
-    assert telemetry_count(h) >= before + 4  # 5 Hz resumed
-    assert h.boat.state == m.State.HOLD  # stays safe until the operator resumes
-    texts = [e.text for e in h.of(StatusTextReceived)]
-    assert any("RESUME" in t for t in texts)
-    assert command(h, m.CommandCode.RESUME).state == m.State.RUNNING
-    assert not h.boat.flags & m.Flag.FAILSAFE
-    assert [type(e) for e in h.events if isinstance(e, LinkUp | LinkDown)] == \
-        [LinkUp, LinkDown, LinkUp]
-
-
-def test_definition_mismatch_is_reported_naming_both_versions():
-    h = Harness()
-    other = m.Heartbeat(0x12345678, 2, m.Sender.BOAT, 0, 0, 0, 0, 0)
-    from usvstation.link.codec import encode_frame, encode_payload
-
-    frame = encode_frame(0, 0, encode_payload(other), version=2)
-    h.events += h.station.receive_data(frame, 0.0)
-    mm = h.of(DefinitionMismatch)
-    assert len(mm) == 1
-    msg = mm[0].message
-    assert "boat speaks usv-link v2 (definitions 0x12345678)" in msg
-    assert f"station speaks usv-link v1 (definitions 0x{m.DEFINITION_CRC:08X})" in msg
-    with pytest.raises(RuntimeError, match="mismatch"):
-        h.station.send_command(m.CommandCode.START, 0.0)
-    boat = _boat()
-    boat.receive_data(Encoder().encode(other._replace(sender=m.Sender.STATION)), 0.0)
-    texts = [x.text for x in FrameDecoder().feed(boat.data_to_send())
-             if isinstance(x, m.StatusText)]
-    assert texts == [f"mismatch station v2 0x12345678 boat v1 0x{m.DEFINITION_CRC:08X}"]
-    assert not boat.linked
-
-
-@pytest.mark.parametrize("hz", [5, 50])
-def test_telemetry_rate(hz):
-    h = Harness(boat_cfg=BoatConfig(telemetry_hz=hz))
-    h.connect()
-    n0 = telemetry_count(h)
-    h.run(4.0, dt=0.005)
-    assert abs((telemetry_count(h) - n0) - 4 * hz) <= 2
-
-
-def test_sim_speed_runs_boat_time_faster():
-    h = Harness(boat_cfg=BoatConfig(sim_speed=10.0))
-    h.connect()
-    t0 = h.boat.boat_time
-    h.run(1.0)
-    assert h.boat.boat_time - t0 == pytest.approx(10.0, abs=0.15)
-    assert h.boat.linked  # link timing stays in link (wall) time: no false failsafe
-
-
-def test_mission_is_flown_with_position_linear_in_time_and_completes():
-    h = Harness(boat_cfg=BoatConfig(sim_speed=20.0))
-    h.connect()
-    mission = make_mission(4, 6)
-    assert upload(h, mission).ok
-    h.vehicle = h.boat.vehicle
-    assert command(h, m.CommandCode.START, 4).accepted
-    assert h.run(30.0, until=lambda: h.boat.state == m.State.DONE)
-    last = plan_from_mission(mission, FRAME)[-1]
-    s = h.vehicle.state
-    assert math.hypot(s.x - last["x"], s.y - last["y"]) < 0.05
-    assert any("complete" in e.text for e in h.of(StatusTextReceived))
-
-
-def test_guidance_setpoint_steers_then_expires():
-    h = Harness()
-    h.connect()
-    assert upload(h, make_mission(4, 6)).ok
-    assert command(h, m.CommandCode.START, 4).accepted
-    h.run(0.5)
-    h.station.send_guidance(0, 200, 500)  # due north at 2 m/s for 0.5 s
+    c = _station_frames(h)
+    h.extra_to_boat.append(c.encode(c.mav.usv_mission_begin_encode(1, 1, 21, 0, 5, 0)))
+    h.run(29.0)
+    assert h.boat.staging is not None
+    h.run(1.5)
+    assert h.boat.staging is None and "staging of 21 expired" in _texts(h)
+    c2 = _station_frames(h)
+    h.extra_to_boat.append(c2.encode(c2.mav.usv_mission_begin_encode(1, 1, 22, 0, 5, 0)))
     h.run(0.2)
-    assert h.boat.mode == m.Mode.GUIDED
-    assert math.degrees(h.vehicle.state.heading) == pytest.approx(FRAME.ramp_bearing_deg - 0.0)
-    h.run(0.5)
-    assert h.boat.mode == m.Mode.AUTO
+    assert h.boat.staging.mission_id == 22
+    assert _command(h, "abort").accepted and h.boat.staging is None
 
 
-def test_mission_from_plan_refuses_bad_input_with_a_clear_message():
-    wps = [{"x": 0, "y": 0, "t": 0, "speed": 1, "heading_deg": 0},
-           {"x": 1, "y": 0, "t": 0, "speed": 1, "heading_deg": 0}]
-    with pytest.raises(MissionError, match="waypoint 1: t_ms 0 not after"):
-        mission_from_plan(wps, FRAME, 1)
-    with pytest.raises(MissionError, match="waypoint 0: speed -1"):
-        mission_from_plan([{**wps[0], "speed": -1}], FRAME, 1)
-    with pytest.raises(MissionError, match="mission_id"):
-        mission_from_plan(wps[:1], FRAME, 0)
+def test_start_names_the_mission_and_is_refused_far_from_waypoint_0():
+    h = Harness(x=60.0, y=10.0)  # 25 m from waypoint 0 at (85, 10)
+    h.connect()
+    m = make_mission(3)
+    assert _upload(h, m).ok
+    wrong = _command(h, "start", make_mission(4))
+    assert wrong.reason == "MISSION_MISMATCH" and h.boat.state == 1
+    far = _command(h, "start", m)
+    assert far.result == mav.MAV_RESULT_DENIED and far.reason == "TOO_FAR"
+    text = next(t for t in _texts(h) if "from waypoint 0" in t)
+    assert text.startswith("START refused: 24.9 m") and text.endswith("(limit 10 m)")
 
 
-def test_a_looped_back_line_is_not_a_link():
-    """Each side ignores its own heartbeat echoed back (a loopback plug or a radio echo)."""
+def test_duplicates_answered_once_but_hold_and_abort_always_act():
     h = Harness()
-    h.station.poll(0.0)
-    echo = h.station.data_to_send()
-    assert h.station.receive_data(echo, 0.01) == [] and not h.station.link_up
-    h.boat.update(0.0)
-    h.boat.receive_data(h.boat.data_to_send(), 0.01)
-    assert not h.boat.linked
+    h.connect()
+    m = make_mission(5)
+    assert _upload(h, m).ok
+    assert _command(h, "start", m).accepted
+    c = _station_frames(h)
+    e = c.mav
+    session = h.station.session
+
+    def cmd(code, seq, x=0, y=0):
+        return c.encode(e.command_int_encode(1, 1, 0, code, 0, 0, float(seq), float(session),
+                                             0, 0, x, y, 0))
+
+    h.extra_to_boat.append(cmd(mav.MAV_CMD_USV_HOLD, 500))
+    h.run(0.2)
+    assert h.boat.state == 3  # HOLD
+    h.extra_to_boat.append(cmd(mav.MAV_CMD_USV_RESUME, 501))
+    h.run(0.2)
+    h.extra_to_boat.append(cmd(mav.MAV_CMD_USV_RESUME, 501))  # a retry: not executed again
+    h.extra_to_boat.append(cmd(mav.MAV_CMD_USV_HOLD, 500))  # same key: HOLD acts anyway
+    h.run(0.2)
+    names = [n for _, n in h.boat.executed]
+    assert names == ["start", "hold", "resume", "hold"] and h.boat.state == 3
+    h.run(5.5)  # the memory expires after 5 s
+    h.extra_to_boat.append(cmd(mav.MAV_CMD_USV_RESUME, 501))
+    h.run(0.2)
+    assert h.boat.executed[-1][1] == "resume" and h.boat.state == 2
 
 
-def test_upload_failure_reasons_name_the_message():
-    from usvstation.link.protocol import LinkConfig, MissionUploader
+def test_a_new_session_clears_the_duplicate_memory():
+    h = Harness()
+    h.connect()
+    m = make_mission(5)
+    assert _upload(h, m).ok
+    seq = h.station.commands._next_seq
+    assert _command(h, "start", m).accepted
+    assert _command(h, "hold").accepted
+    h.restart_station(session=4242)
+    h.connect()
+    h.station.commands._next_seq = seq  # the new process reuses the old ids
+    assert _command(h, "resume").accepted
+    assert [n for _, n in h.boat.executed] == ["start", "hold", "resume"]
+    assert h.boat.state == 2 and h.boat.session == 4242
 
-    mission = make_mission(7, 4)
-    up = MissionUploader(mission, LinkConfig(), 0.0)
-    assert up.start(0.0) == [mission.begin()]
-    sent, _ = up.handle(m.MissionAck(7, m.MissionStage.BEGIN, 0, 0), 0.01)
-    assert sent == list(mission.items)  # window of 8 holds all 4
-    _, events = up.handle(m.MissionNak(7, m.MissionStage.ITEM, 2, m.NakReason.UNKNOWN_MISSION,
-                                       0), 0.02)
-    assert events[0].reason == "boat refused item 2: UNKNOWN_MISSION" and not events[0].ok
-    up = MissionUploader(mission, LinkConfig(max_attempts=3), 0.0)
-    up.start(0.0)
-    for t in (0.31, 0.62, 0.93):
-        _, events = up.poll(t)
-    assert events[0].reason == "MISSION_BEGIN not acknowledged after 3 attempts"
+
+def test_an_ack_for_another_command_or_seq_is_not_the_answer():
+    cfg = LinkConfig()
+    sender = CommandSender(cfg, RttEstimator(cfg), session=9)
+    seq = sender.send("hold", 0.0)
+    enc = wire.Codec(1, 1).mav
+
+    def ack(code, s):
+        return enc.command_ack_encode(code, 0, 0, s, 255, 190)
+
+    assert sender.handle(ack(mav.MAV_CMD_USV_START, seq)) == []
+    assert sender.handle(ack(mav.MAV_CMD_USV_HOLD, seq + 1)) == []
+    out = sender.handle(ack(mav.MAV_CMD_USV_HOLD, seq))
+    assert out[0].accepted and out[0].seq == seq
+    seq2 = sender.send("abort", 0.0)
+    events, t = [], 0.0
+    while not events:  # no answer: retried, then an outcome within bounded time
+        t += 0.05
+        events += sender.due(t)[1]
+        assert t < cfg.command_attempts * cfg.max_timeout_s + 1
+    assert events[0].seq == seq2 and events[0].result is None
+
+
+def test_echo_and_other_boats_do_not_keep_the_link_alive():
+    h = Harness()
+    h.connect()
+    m = make_mission(5)
+    assert _upload(h, m).ok and _command(h, "start", m).accepted
+    other = wire.Codec(2, 1, KEY, timestamp=wire.signing_time(UNIX0 + h.t))
+    h.echo, h.station_silent = True, True
+    t0 = h.t
+    while h.boat.state != 6 and h.t - t0 < 5:  # FAILSAFE
+        h.extra_to_boat.append(other.encode(other.mav.heartbeat_encode(
+            mav.MAV_TYPE_SURFACE_BOAT, 0, 0, 0, 0)))
+        h.run(0.1)
+    assert h.boat.state == 6 and h.t - t0 <= 3.5
+    assert h.boat.echoes > 0 and h.boat.other_systems[2] > 0
+
+
+def test_station_heartbeats_on_a_fixed_schedule_and_telemetry_on_boat_time():
+    h = Harness()
+    times = []
+    for _ in range(400):
+        h.step(0.0137)
+        sent = h.tap[-1] if h.tap and h.tap[-1][0] == h.t else None
+        if sent and any(f[7] == 0 and f[8] == 0 and f[9] == 0
+                        for f in wire.split_frames(sent[1])):
+            times.append(h.t)
+    gaps = [b - a for a, b in itertools.pairwise(times)]
+    assert max(gaps) <= 0.25 + 0.0137 and min(gaps) >= 0.25 - 0.0137
+    tel = []
+    h.station._telemetry = lambda gp: tel.append(gp.time_boot_ms) or h.station.telemetry
+    h.run(3.0, dt=0.013)
+    assert {b - a for a, b in itertools.pairwise(tel)} == {200}
+
+
+def test_acks_go_out_before_queued_telemetry():
+    h = Harness(boat_cfg=BoatConfig(baud=9600, telemetry_hz=50))
+    h.connect()
+    h.run(1.0)
+    h.boat.update(h.t + 0.2)  # ten telemetry cycles queue up behind the 9600 baud line
+    h.t += 0.2
+    assert len(h.boat._telemetry) > 0
+    c = _station_frames(h)
+    h.boat.receive_data(c.encode(c.mav.command_int_encode(
+        1, 1, 0, mav.MAV_CMD_USV_HOLD, 0, 0, 1.0, 5.0, 0, 0, 0, 0, 0)), h.t)
+    ids = [f[7] | f[8] << 8 | f[9] << 16 for f in wire.split_frames(h.boat.data_to_send(h.t))]
+    telemetry = {mav.MAVLINK_MSG_ID_GLOBAL_POSITION_INT, mav.MAVLINK_MSG_ID_USV_THRUST}
+    first_telemetry = min((k for k, i in enumerate(ids) if i in telemetry), default=len(ids))
+    assert ids.index(mav.MAVLINK_MSG_ID_COMMAND_ACK) < first_telemetry
+    assert len(h.boat._telemetry) > 0  # the telemetry still waits for the line
+
+
+def test_unsigned_guidance_is_refused_and_counted_signed_guidance_steers():
+    h = Harness()
+    h.connect()
+    m = make_mission(5)
+    assert _upload(h, m).ok and _command(h, "start", m).accepted
+    bad = wire.Codec(255, 190)
+    h.extra_to_boat.append(bad.encode(bad.mav.usv_guidance_encode(1, 1, 0, 200, 2000)))
+    h.run(0.2)
+    assert h.boat.guided_until is None and h.boat.refusals["unsigned"] == 1
+    h.station.send_guidance(0, 200, 2000)
+    h.run(0.2)
+    assert h.boat.guided_until is not None
+    h.run(2.5)
+    assert h.boat.guided_until is None  # expired: back to the mission
+
+
+def test_timesync_aligns_the_boat_clock_and_rtt_bounds_the_timeout():
+    h = Harness()
+    h.connect()
+    h.run(2.0)
+    est = h.station.boat_uptime_ms(h.t)
+    assert abs(est - h.boat.uptime_ms) <= 20
+    rtt = h.station.rtt
+    assert rtt.floor <= rtt.timeout <= h.link_cfg.max_timeout_s
+    slow = RttEstimator(LinkConfig(baud=9600))
+    assert slow.floor > RttEstimator(LinkConfig(baud=57600)).floor  # airtime at the baud
+    slow.sample(100.0)
+    assert slow.timeout == LinkConfig().max_timeout_s
+
+
+def test_hot_swap_at_the_instant_old_then_new():
+    h = Harness(loss=0.2, seed=3)
+    h.connect()
+    old = make_mission(30, n=16)
+    assert _upload(h, old, seconds=60).ok and _command(h, "start", old).accepted
+    h.run(3.0)
+    new = make_mission(31, n=16, y0=11.0)
+    swap_at = h.station.boat_uptime_ms(h.t) + 6000
+    assert _upload(h, new, seconds=60, swap_at_ms=swap_at).ok
+    assert h.boat.active.mission_id == 30
+    h.run(8.0)
+    assert h.boat.active.items == new.items
+    (_t_old, id_old), (t_new, id_new) = h.boat.activations
+    assert (id_old, id_new) == (30, 31) and abs(t_new * 1000 - swap_at) < 1
+
+
+def test_replayed_frames_are_refused_by_the_running_boat():
+    h = Harness()
+    h.connect()
+    m = make_mission(5)
+    assert _upload(h, m).ok
+    recorded = b"".join(d for _, d in h.tap)
+    before = h.boat.refusals["replayed"]
+    h.boat.receive_data(recorded, h.t)
+    assert h.boat.refusals["replayed"] - before == len(wire.split_frames(recorded))

@@ -95,3 +95,16 @@ def test_live_track_moves_the_time_when_following(view):
     time.sleep(0.55)
     view.add_track_point(69.0, 10.0, 13.0)
     assert view.time_s == pytest.approx(4.0)
+
+
+def test_a_run_longer_than_its_plan_extends_slider_and_obstacles(view):
+    view.show_scenario(load_scenario("case1"))
+    view.show_plan({"waypoints": WAYPOINTS})
+    assert view.horizon_s == 36
+    view.clear_track()
+    view.add_track_point(80.0, 10.0, 0.0)
+    time.sleep(0.55)
+    view.add_track_point(79.0, 10.0, 50.0)  # the boat held: 50 s into a 30 s plan
+    assert view.horizon_s == 60 and view.gui["time"].max == 60
+    tops = [node.vertices[:, 2].max() for node in view._obstacle_nodes[::2]]
+    assert tops and all(top == pytest.approx(60.0) for top in tops)

@@ -24,14 +24,17 @@ from fastapi.responses import JSONResponse, Response, StreamingResponse
 from pydantic import BaseModel, ConfigDict, Field
 
 from usvstation import __version__
+from usvstation.api.alerts import router as alerts_router
 from usvstation.api.auth import require_operator, require_viewer
+from usvstation.api.charts import router as charts_router
 from usvstation.api.console import default_frontend_dir, mount_console, mount_docs
 from usvstation.api.guard import Guard, GuardConfig
 from usvstation.api.view3d import mount_view3d
+from usvstation.api.world import router as world_router
 from usvstation.scenario import Scenario
 from usvstation.services.boat import BoatError
 from usvstation.services.export import FORMATS, export_chunks, planned_route
-from usvstation.services.plans import PlanNotCancellable, PlanQueueFull
+from usvstation.services.plans import PlanNotCancellable, PlanQueueFull, outdated_by
 from usvstation.station import Station
 
 Auth = [Depends(require_operator)]  # changes and commands
@@ -164,6 +167,8 @@ class CommandRequest(BaseModel):
 
     model_config = ConfigDict(extra="forbid")
     command: Literal["start", "hold", "resume", "abort"]
+    mission_id: str | None = Field(None, min_length=1, max_length=64,
+                                   description="START: the mission to start (required)")
 
 
 def _utc(value: dt.datetime | None) -> str | None:
@@ -264,6 +269,13 @@ def create_app(station: Station) -> FastAPI:
               responses={409: {"description": "plan not done, no origin, or a mission running"},
                          503: {"description": "the boat link is down"}})
     async def post_mission(req: MissionRequest) -> dict[str, Any]:
+        job = station.plans.get(req.plan_id)
+        if job is not None:  # a plan of the working scenario, which changed since: refused
+            changed = outdated_by(job["scenario"], await station.working_scenario())
+            if changed:
+                raise HTTPException(409, detail=(
+                    f"plan {req.plan_id} was made for scenario {job['scenario']['name']!r} as it "
+                    f"was before it changed ({', '.join(changed)}): plan again"))
         return await station.boat.create_mission(req.plan_id)
 
     @app.get("/api/missions", tags=["boat"], dependencies=Read)
@@ -277,12 +289,21 @@ def create_app(station: Station) -> FastAPI:
             raise HTTPException(404, detail=f"no mission {mission_id!r}")
         return mission
 
+    @app.get("/api/missions/{mission_id}/verify", tags=["boat"], dependencies=Read,
+             responses={404: {"description": "no such mission"},
+                        409: {"description": "the boat does not hold it"},
+                        503: {"description": "the boat link is down"},
+                        504: {"description": "the boat did not answer the readback"}})
+    async def verify_mission(mission_id: str) -> dict[str, Any]:
+        """Read the boat's copy back and compare it item by item."""
+        return await station.boat.verify(mission_id)
+
     @app.post("/api/boat/command", tags=["boat"], dependencies=Auth,
               responses={409: {"description": "no verified mission, or the boat refused"},
                          503: {"description": "the boat link is down"},
                          504: {"description": "the boat did not acknowledge in time"}})
     async def boat_command(req: CommandRequest) -> dict[str, Any]:
-        return await station.boat.command(req.command)
+        return await station.boat.command(req.command, req.mission_id)
 
     @app.get("/api/boat", tags=["boat"], dependencies=Read)
     async def boat() -> dict[str, Any]:
@@ -356,6 +377,9 @@ def create_app(station: Station) -> FastAPI:
         finally:
             station.hub.unsubscribe(sub)
 
+    app.include_router(world_router)
+    app.include_router(alerts_router)
+    app.include_router(charts_router)
     frontend = station.settings.frontend_dir or default_frontend_dir()
     mount_docs(app, frontend)
     mount_view3d(app, lambda: station.view.port)

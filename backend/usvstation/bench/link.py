@@ -1,78 +1,104 @@
-"""`usv-station bench link`: mission upload over a real pty at 57600 baud with injected
-faults, sustained telemetry rate, and the Python codec's telemetry decode rate.
+"""`usv-station bench link`: usv-link 2 (signed MAVLink 2) figures.
 
-Upload runs: the station (BoatLink over pyserial-asyncio on the pty's slave device) and
-the simulated boat (on the pty master) each write through a FaultInjectingStream that
-paces the line at 57600 baud (10 bits a byte), drops whole frames with probability
-`loss` and flips bits at `ber`. `bound_s` is the loss-free upload's bytes on the wire in
-both directions x 10 / baud; `time_s` is from the upload call to its result.
+- upload: a signed 32-waypoint mission over a real pty, the station (BoatLink on
+  pyserial-asyncio, on the slave device) and the simulated boat (on the master) each
+  writing through a FaultInjectingStream that paces the line at the baud (10 bits a
+  byte) and drops whole frames with probability `loss`. `bound_s` is the line-rate
+  bound: the upload's own frames (BEGIN, items, END and their ACKs, signed) both ways,
+  x 10 / baud (the definition of issue 4's bench); `one_way_bound_s` the stricter
+  full-duplex bound, the larger direction alone; `time_s` is from the upload call to its
+  result; `identical`: the boat holds exactly the mission sent (read from the boat).
+- failsafe: StationProtocol and BoatProtocol on a simulated clock, the boat RUNNING a
+  long mission for 10 minutes of simulated time with `loss` of the station-to-boat
+  frames; counts the boat's failsafes (any is spurious: the station never fell silent).
+- decode: GLOBAL_POSITION_INT frames (signed) per second through the Python codec.
 """
 
 from __future__ import annotations
 
 import asyncio
 import platform
+import random
 import time
 from collections.abc import Callable
 from typing import Any
 
 from usvstation.geo import RampFrame
-from usvstation.link import messages as m
-from usvstation.link.codec import Encoder, FrameDecoder
+from usvstation.link import wire
 from usvstation.link.mission import Mission, mission_from_plan
-from usvstation.link.protocol import TelemetryReceived
+from usvstation.link.protocol import LinkConfig, StationProtocol, UploadResult
 from usvstation.link.station import BoatLink
 from usvstation.link.transport import FaultInjectingStream, PtyPair, SerialStream
-from usvstation.sim.boat import BoatConfig
+from usvstation.sim.boat import BoatConfig, BoatProtocol
 from usvstation.sim.runner import SimulatedBoat, make_boat
+from usvstation.sim.sensors import GpsNoise
+from usvstation.sim.vehicle import KinematicVehicle
 
-BAUD = 57600
 FRAME = RampFrame(30.5135, 114.4182, 90.0)  # case1's origin
+KEY = bytes(range(7, 39))
 
 
-def bench_mission(n: int = 32, mission_id: int = 1) -> Mission:
-    """A 32-waypoint zig-zag approach to the ramp (ramp frame, position linear in time)."""
+def bench_mission(n: int = 32, mission_id: int = 1, speed: float = 1.5) -> Mission:
+    """A 32-waypoint zig-zag approach to the ramp from (85, 10), position linear in time."""
     wps: list[dict[str, float]] = []
     t = 0.0
     for i in range(n):
-        x, y = 90.0 - i * 90.0 / (n - 1), (8.0 if i % 2 else -8.0) * (1 - i / n)
+        f = i / (n - 1)
+        x = 85.0 * (1 - f)
+        y = 10.0 * (1 - f) + (0.0 if i in (0, n - 1) else (3.0 if i % 2 else -3.0))
         if wps:
-            t += ((x - wps[-1]["x"]) ** 2 + (y - wps[-1]["y"]) ** 2) ** 0.5 / 1.5
-        wps.append({"x": x, "y": y, "t": t, "speed": 1.5, "heading_deg": 180.0})
+            t += ((x - wps[-1]["x"]) ** 2 + (y - wps[-1]["y"]) ** 2) ** 0.5 / speed
+        wps.append({"x": x, "y": y, "t": t, "speed": speed, "heading_deg": 180.0})
     return mission_from_plan(wps, FRAME, mission_id)
+
+
+def upload_wire_bytes(mission: Mission) -> tuple[int, int]:
+    """Bytes of a loss-free signed upload's own frames: (station to boat, boat to station)."""
+    st = wire.Codec(wire.STATION_ID, wire.STATION_COMPONENT, KEY)
+    bt = wire.Codec(wire.BOAT_ID, wire.BOAT_COMPONENT, KEY)
+    e, b = st.mav, bt.mav
+    up = len(st.encode(e.usv_mission_begin_encode(1, 1, mission.mission_id, mission.crc,
+                                                  mission.count, 0)))
+    up += len(st.encode(e.usv_mission_end_encode(1, 1, mission.mission_id, mission.crc,
+                                                 mission.count)))
+    for it in mission.items:
+        up += len(st.encode(e.usv_mission_item_encode(
+            1, 1, it.mission_id, it.seq, it.lat, it.lon, it.t_ms, it.speed_cms, it.course_cdeg,
+            it.heading_cdeg)))
+    down = sum(len(bt.encode(b.usv_mission_ack_encode(255, 190, mission.mission_id, seq, 0,
+                                                      stage)))
+               for seq, stage in [(0, 1), *((i + 1, 2) for i in range(mission.count)),
+                                  (mission.count, 3)])
+    return up, down
 
 
 class _Rig:
     """Boat and station on one pty pair, each writing through a fault injector."""
 
-    def __init__(self, loss: float, ber: float, seed: int, telemetry_hz: float = 5.0) -> None:
-        self.loss, self.ber, self.seed = loss, ber, seed
+    def __init__(self, baud: int, loss: float, seed: int) -> None:
+        self.baud, self.loss, self.seed = baud, loss, seed
         self.pair = PtyPair()
-        self.boat = make_boat(FRAME, config=BoatConfig(telemetry_hz=telemetry_hz), seed=seed)
+        self.boat = make_boat(FRAME, config=BoatConfig(baud=baud), seed=seed, key=KEY)
         self.station_faults: FaultInjectingStream | None = None
 
     async def __aenter__(self) -> _Rig:
         self.boat_faults = FaultInjectingStream(self.pair.master_stream(), loss=self.loss,
-                                                ber=self.ber, baud=BAUD, seed=self.seed)
+                                                baud=self.baud, seed=self.seed)
         self.stop = asyncio.Event()
         self.boat_task = asyncio.get_running_loop().create_task(
             SimulatedBoat(self.boat).run(self.boat_faults, self.stop))
 
         async def factory() -> FaultInjectingStream:
-            inner = await SerialStream.open(self.pair.slave_path, BAUD)
-            self.station_faults = FaultInjectingStream(inner, loss=self.loss, ber=self.ber,
-                                                       baud=BAUD, seed=self.seed + 1000)
+            inner = await SerialStream.open(self.pair.slave_path, self.baud)
+            self.station_faults = FaultInjectingStream(inner, loss=self.loss, baud=self.baud,
+                                                       seed=self.seed + 1000)
             return self.station_faults
 
-        self.link = BoatLink(stream_factory=factory)
+        self.link = BoatLink(stream_factory=factory, key=KEY, config=LinkConfig(baud=self.baud))
         await self.link.start()
         if not await self.link.wait_link_up(20.0):
             raise RuntimeError("the link did not come up")
         return self
-
-    def wire_bytes(self) -> int:
-        return self.boat_faults.bytes_on_wire + (self.station_faults.bytes_on_wire
-                                                 if self.station_faults else 0)
 
     async def __aexit__(self, *exc: object) -> None:
         await self.link.close()
@@ -82,92 +108,129 @@ class _Rig:
         self.pair.close()
 
 
-async def _upload_run(loss: float, ber: float, seed: int) -> dict[str, Any]:
-    mission = bench_mission()
-    async with _Rig(loss, ber, seed) as rig:
-        await asyncio.sleep(0.3)  # let the handshake's frames drain from the queues
-        b0 = rig.wire_bytes()
+async def _upload_run(baud: int, loss: float, seed: int, bound_s: float,
+                      one_way_s: float) -> dict[str, Any]:
+    mission = bench_mission(mission_id=seed * 100 + int(loss * 100) + 1)
+    async with _Rig(baud, loss, seed) as rig:
+        await asyncio.sleep(0.5)  # the handshake's frames and first telemetry drain
         t0 = time.perf_counter()
         result = await rig.link.upload_mission(mission)
         elapsed = time.perf_counter() - t0
-        await asyncio.sleep(0.05)  # the END ACK's last bytes
-        wire = rig.wire_bytes() - b0
         active = rig.boat.active
         return {
-            "loss": loss, "ber": ber, "seed": seed, "time_s": round(elapsed, 4),
+            "baud": baud, "loss": loss, "seed": seed, "time_s": round(elapsed, 4),
+            "bound_s": round(bound_s, 4), "ratio": round(elapsed / bound_s, 3),
+            "one_way_bound_s": round(one_way_s, 4),
+            "ratio_one_way": round(elapsed / one_way_s, 3),
             "completed": result.ok, "reason": result.reason,
             "identical": bool(active is not None and active.items == mission.items),
             "partial_activated": bool(active is not None and active.items != mission.items),
-            "retransmissions": result.retransmissions, "wire_bytes": wire,
+            "retransmissions": result.retransmissions,
         }
 
 
-async def _telemetry_rate(hz: float, seconds: float) -> float:
-    async with _Rig(0.0, 0.0, 0, telemetry_hz=hz) as rig:
-        count = 0
+def spurious_failsafes(loss: float, minutes: float = 10.0, seed: int = 1,
+                       dt: float = 0.01) -> dict[str, Any]:
+    """The boat RUNNING for `minutes` of simulated time with `loss` of station frames."""
+    rng = random.Random(seed)
+    n = 64
+    wps = [{"x": 85.0 - i * 0.5, "y": 10.0, "t": i * (minutes * 60 + 60) / (n - 1),
+            "speed": 0.1, "heading_deg": 180.0} for i in range(n)]
+    mission = mission_from_plan(wps, FRAME, 77)
+    boat = BoatProtocol(KinematicVehicle(85.0, 10.0, 3.14159), FRAME, BoatConfig(), key=KEY,
+                        gps=GpsNoise(seed=seed), now=0.0, unix_time=1.7e9)
+    station = StationProtocol(LinkConfig(), 0.0, key=KEY, unix_time=1.7e9, session=5)
+    t = 0.0
+    uploaded = started = False
+    running_s = 0.0
+    while running_s < minutes * 60:
+        t += dt
+        boat.update(t)
+        down = boat.data_to_send(t)
+        events = station.receive_data(down, t) if down else station.poll(t)
+        up = station.data_to_send()
+        if up:
+            kept = b"".join(f for f in wire.split_frames(up)
+                            if not started or rng.random() >= loss)
+            if kept:
+                boat.receive_data(kept, t)
+        if not uploaded and station.link_up:
+            station.start_upload(mission, t)
+            uploaded = True
+        if uploaded and not started and any(isinstance(e, UploadResult) for e in events):
+            station.send_command("start", t, mission.mission_id, mission.crc)
+            started = True
+        if boat.state == 2:  # RUNNING
+            running_s += dt
+        if t > minutes * 60 + 120:
+            break
+    return {"loss": loss, "simulated_running_s": round(running_s, 1),
+            "failsafes": boat.failsafes, "boat_state": wire.BOAT_STATES[boat.state]}
 
-        def on_event(ev: Any) -> None:
-            nonlocal count
-            if isinstance(ev, TelemetryReceived):
-                count += 1
 
-        await asyncio.sleep(0.5)
-        rig.link.add_listener(on_event)
-        t0 = time.perf_counter()
-        await asyncio.sleep(seconds)
-        return count / (time.perf_counter() - t0)
-
-
-def decode_rate(frames: int = 100_000, repeats: int = 3) -> float:
-    """Telemetry frames per second through FrameDecoder.feed (4096-byte chunks), best of N."""
-    enc = Encoder()
-    base = m.Telemetry(123456, 305135000, 1144182000, 3, 12, 90, 150, 18000, 17950, -120, 500,
-                       480, 12100, 5, -35, 2, 1, 0)
-    data = b"".join(enc.encode(base._replace(time_ms=i, lat_e7=305135000 + i))
+def decode_rate(frames: int = 100_000, repeats: int = 3) -> tuple[float, float]:
+    """Signed GLOBAL_POSITION_INT frames decoded through Codec.feed (4096-byte chunks), best
+    of `repeats`: (per second of this process's CPU time, per second of wall time). The CPU
+    figure is the codec's own rate on a shared machine; the wall figure includes waiting
+    for a core."""
+    enc = wire.Codec(1, 1, KEY, timestamp=wire.signing_time(1.7e9))
+    e = enc.mav
+    data = b"".join(enc.encode(e.global_position_int_encode(i, 305135000 + i, 1144182000, 0,
+                                                            0, 150, -20, 0, 18000))
                     for i in range(frames))
-    best = 0.0
+    best_cpu = best_wall = 0.0
     for _ in range(repeats):
-        dec = FrameDecoder()
-        t0 = time.perf_counter()
+        dec = wire.Codec(255, 190, KEY, timestamp=0)
+        c0, t0 = time.process_time(), time.perf_counter()
         n = 0
         for i in range(0, len(data), 4096):
-            n += len(dec.feed(data[i : i + 4096]))
-        best = max(best, n / (time.perf_counter() - t0))
+            n += len(dec.feed(data[i : i + 4096])[0])
+        cpu, wall = time.process_time() - c0, time.perf_counter() - t0
+        best_cpu, best_wall = max(best_cpu, n / max(cpu, 1e-9)), max(best_wall, n / wall)
         assert n == frames
-    return best
+    return best_cpu, best_wall
 
 
-async def _run(quick: bool, progress: Callable[[str], None]) -> dict[str, Any]:
-    seeds = [1] if quick else [1, 2, 3, 4, 5]
+async def _uploads(quick: bool, progress: Callable[[str], None]) -> list[dict[str, Any]]:
+    up, down = upload_wire_bytes(bench_mission())
     runs = []
-    clean = [await _upload_run(0.0, 0.0, s) for s in seeds]
-    runs += clean
-    progress(f"loss-free: {[r['time_s'] for r in clean]}")
-    bound_bytes = max(r["wire_bytes"] for r in clean)
-    bound_s = bound_bytes * 10 / BAUD
-    for loss in (0.0, 0.1, 0.2):
-        batch = [await _upload_run(loss, 1e-4, s) for s in seeds]
-        progress(f"loss {loss} + ber 1e-4: {[(r['time_s'], r['completed']) for r in batch]}")
-        runs += batch
-    for r in runs:
-        r["bound_s"] = round(bound_s, 4)
-        r["ratio"] = round(r["time_s"] / bound_s, 3)
-    tel_seconds = 2.0 if quick else 5.0
-    tel_50 = await _telemetry_rate(50.0, tel_seconds)
-    tel_5 = await _telemetry_rate(5.0, tel_seconds)
-    progress(f"telemetry: {tel_50:.1f} Hz at 50 configured, {tel_5:.2f} Hz at 5")
-    return {
-        "bench": "link", "baud": BAUD, "waypoints": 32,
-        "machine": f"{platform.machine()} {platform.system()} {platform.release()}, "
-                   f"python {platform.python_version()}",
-        "bound_bytes": bound_bytes,
-        "upload": runs,
-        "telemetry_hz": round(tel_50, 2), "telemetry_hz_configured": 50,
-        "telemetry_hz_default": round(tel_5, 2),
-        "decode_frames_per_s": round(decode_rate(30_000 if quick else 100_000)),
-    }
+    for baud, seeds in ((57600, [1] if quick else [1, 2, 3]), (9600, [1] if quick else [1, 2])):
+        bound_s = (up + down) * 10 / baud
+        one_way_s = max(up, down) * 10 / baud
+        for loss in (0.0, 0.1, 0.2):
+            batch = [await _upload_run(baud, loss, s, bound_s, one_way_s) for s in seeds]
+            rows = [(r["time_s"], r["ratio"], r["ratio_one_way"], r["retransmissions"],
+                     r["identical"]) for r in batch]
+            progress(f"{baud} baud, loss {loss}: (time_s, ratio, one-way ratio, "
+                     f"retransmissions, identical) {rows}")
+            runs += batch
+    return runs
 
 
 def run_link_bench(quick: bool = False,
                    progress: Callable[[str], None] = lambda _: None) -> dict[str, Any]:
-    return asyncio.run(_run(quick, progress))
+    up, down = upload_wire_bytes(bench_mission())
+    uploads = asyncio.run(_uploads(quick, progress))
+    minutes = 1.0 if quick else 10.0
+    failsafe = [spurious_failsafes(loss, minutes) for loss in (0.2,)]
+    progress(f"failsafe: {failsafe}")
+    decode_cpu, decode_wall = decode_rate(30_000 if quick else 100_000)
+    progress(f"decode: {decode_cpu:.0f} frames per CPU second, {decode_wall:.0f} per wall s")
+
+    def worst(baud: int, loss: float) -> float | None:
+        r = [x["ratio"] for x in uploads if x["baud"] == baud and x["loss"] == loss]
+        return max(r) if r else None
+
+    return {
+        "bench": "link", "protocol": "usv-link 2 (MAVLink 2, signed)", "waypoints": 32,
+        "machine": f"{platform.machine()} {platform.system()} {platform.release()}, "
+                   f"python {platform.python_version()}",
+        "upload_bytes": {"station_to_boat": up, "boat_to_station": down},
+        "upload": uploads,
+        "worst_ratio_loss_free": {"57600": worst(57600, 0.0), "9600": worst(9600, 0.0)},
+        "all_identical": all(r["identical"] for r in uploads),
+        "partial_activations": sum(r["partial_activated"] for r in uploads),
+        "failsafe": failsafe,
+        "decode_frames_per_cpu_s": round(decode_cpu),
+        "decode_frames_per_wall_s": round(decode_wall),
+    }

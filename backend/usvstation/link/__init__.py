@@ -1,4 +1,5 @@
-"""The boat link: usv-link codec, sans-IO station protocol, transports and the async BoatLink.
+"""The boat link: usv-link 2 (MAVLink 2 dialect, protocol/usv_recovery.xml), the pymavlink
+codec with signing, sans-IO station state machines, transports and the async BoatLink.
 
-Wire format: protocol/README.md (generated parts from protocol/messages.toml).
+Specification: protocol/README.md; layers: docs/link.md.
 """

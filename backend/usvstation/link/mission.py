@@ -1,11 +1,14 @@
-"""A mission as sent on the wire: plan waypoints (ramp frame, SI) to MISSION_ITEMs and back.
+"""A mission as sent on the wire: plan waypoints (ramp frame, SI) to USV_MISSION_ITEMs and back.
 
-Items carry WGS-84 lat/lon in 1e-7 degrees, t in ms, speed in cm/s and the compass
-heading of the segment leaving the waypoint in 0.01 degree (protocol/README.md).
+Items carry WGS-84 lat/lon in 1e-7 degrees, t in ms from the mission start, speed in
+cm/s, the compass course over ground of the leg leaving the waypoint and the compass
+heading of the hull on it, in 0.01 degree (protocol/README.md "Mission"). The ranges
+checked here are the boat's (`item_problem` is what both boats refuse with OUT_OF_RANGE).
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -13,11 +16,12 @@ from typing import Any
 import numpy as np
 
 from usvstation.geo import RampFrame
-from usvstation.link import messages as m
-from usvstation.link.codec import mission_crc32
+from usvstation.link.wire import MAX_MISSION_ITEMS, item_crc32
 
 LAT_MAX_E7 = 90 * 10**7
 LON_MAX_E7 = 180 * 10**7
+SPEED_MAX_CMS = 3000
+MIN_ITEMS = 2
 
 
 class MissionError(ValueError):
@@ -26,7 +30,7 @@ class MissionError(ValueError):
 
 @dataclass(frozen=True)
 class Origin:
-    """The ramp-frame origin on the wire: ramp end lat/lon (1e-7 deg), +x bearing (0.01 deg)."""
+    """The ramp-frame anchor the station converts with (not on the wire: items are geodetic)."""
 
     lat_e7: int
     lon_e7: int
@@ -40,63 +44,91 @@ class Origin:
     def to_frame(self) -> RampFrame:
         return RampFrame(self.lat_e7 / 1e7, self.lon_e7 / 1e7, self.ramp_bearing_cdeg / 100)
 
-    def as_tuple(self) -> tuple[int, int, int]:
-        return (self.lat_e7, self.lon_e7, self.ramp_bearing_cdeg)
+
+@dataclass(frozen=True)
+class MissionItem:
+    """One USV_MISSION_ITEM's values (integers as on the wire)."""
+
+    mission_id: int
+    seq: int
+    lat: int  # 1e-7 deg
+    lon: int
+    t_ms: int
+    speed_cms: int
+    course_cdeg: int
+    heading_cdeg: int
+
+    @classmethod
+    def from_msg(cls, msg: Any) -> MissionItem:
+        return cls(msg.mission_id, msg.seq, msg.lat, msg.lon, msg.t_ms, msg.speed_cms,
+                   msg.course_cdeg, msg.heading_cdeg)
+
+    def as_dict(self) -> dict[str, int]:
+        return {k: getattr(self, k) for k in self.__dataclass_fields__}
 
 
 @dataclass(frozen=True)
 class Mission:
-    """A verified, wire-ready mission: its id, origin and items (MissionItem messages)."""
+    """A validated, wire-ready mission: id, items and the origin it was planned in."""
 
     mission_id: int
-    origin: Origin
-    items: tuple[m.MissionItem, ...]
+    items: tuple[MissionItem, ...]
+    origin: Origin | None = None
 
     def __post_init__(self) -> None:
         validate_items(self.mission_id, self.items)
 
     @property
     def crc(self) -> int:
-        return mission_crc32(self.origin.as_tuple(), self.items)
+        return item_crc32(self.items)
 
     @property
     def count(self) -> int:
         return len(self.items)
 
-    def begin(self) -> m.MissionBegin:
-        return m.MissionBegin(self.mission_id, self.count, self.crc, *self.origin.as_tuple())
 
-    def end(self) -> m.MissionEnd:
-        return m.MissionEnd(self.mission_id, self.count, self.crc)
-
-
-def validate_items(mission_id: int, items: Sequence[m.MissionItem]) -> None:
-    """Raise MissionError unless the items form an executable mission (README "Mission")."""
-    if not 1 <= mission_id <= 0xFFFF:
-        raise MissionError(f"mission_id must be 1..65535, got {mission_id}")
-    if not 1 <= len(items) <= m.MAX_MISSION_ITEMS:
-        raise MissionError(f"a mission has 1..{m.MAX_MISSION_ITEMS} waypoints, got {len(items)}")
-    prev_t = -1
-    for i, it in enumerate(items):
-        problem = item_problem(it)
-        if it.index != i or it.mission_id != mission_id:
-            problem = f"index/mission_id {it.index}/{it.mission_id}, expected {i}/{mission_id}"
-        elif problem is None and it.t_ms <= prev_t:
-            problem = f"t_ms {it.t_ms} not after the previous waypoint's {prev_t}"
-        if problem:
-            raise MissionError(f"waypoint {i}: {problem}")
-        prev_t = it.t_ms
-
-
-def item_problem(it: m.MissionItem) -> str | None:
-    """Why a single item is out of range, or None (the boat's per-item check, BAD_ITEM)."""
-    if not -LAT_MAX_E7 <= it.lat_e7 <= LAT_MAX_E7:
-        return f"lat_e7 {it.lat_e7} outside +-90 deg"
-    if not -LON_MAX_E7 <= it.lon_e7 <= LON_MAX_E7:
-        return f"lon_e7 {it.lon_e7} outside +-180 deg"
+def item_problem(it: Any) -> str | None:
+    """Why one item's values are out of range, or None (the boat's per-item check)."""
+    if not -LAT_MAX_E7 <= it.lat <= LAT_MAX_E7:
+        return f"lat {it.lat} outside +-90 deg"
+    if not -LON_MAX_E7 <= it.lon <= LON_MAX_E7:
+        return f"lon {it.lon} outside +-180 deg"
+    if it.speed_cms > SPEED_MAX_CMS:
+        return f"speed_cms {it.speed_cms} above {SPEED_MAX_CMS}"
+    if not 0 <= it.course_cdeg < 36000:
+        return f"course_cdeg {it.course_cdeg} outside 0..35999"
     if not 0 <= it.heading_cdeg < 36000:
         return f"heading_cdeg {it.heading_cdeg} outside 0..35999"
+    if it.seq == 0 and it.t_ms != 0:
+        return f"t_ms {it.t_ms} of item 0 is not 0"
     return None
+
+
+def sequence_problem(items: Sequence[Any]) -> tuple[int, str] | None:
+    """(index, why) of the first item whose time does not increase, or None."""
+    for i in range(1, len(items)):
+        if items[i].t_ms <= items[i - 1].t_ms:
+            return i, f"t_ms {items[i].t_ms} not after the previous item's {items[i - 1].t_ms}"
+    return None
+
+
+def validate_items(mission_id: int, items: Sequence[MissionItem]) -> None:
+    """Raise MissionError unless the items form an executable mission."""
+    if not 1 <= mission_id <= 0xFFFFFFFF:
+        raise MissionError(f"mission_id must be 1..2^32-1, got {mission_id}")
+    if not MIN_ITEMS <= len(items) <= MAX_MISSION_ITEMS:
+        raise MissionError(f"a mission has {MIN_ITEMS}..{MAX_MISSION_ITEMS} waypoints, "
+                           f"got {len(items)}")
+    for i, it in enumerate(items):
+        if it.seq != i or it.mission_id != mission_id:
+            raise MissionError(f"waypoint {i}: seq/mission_id {it.seq}/{it.mission_id}, "
+                               f"expected {i}/{mission_id}")
+        problem = item_problem(it)
+        if problem:
+            raise MissionError(f"waypoint {i}: {problem}")
+    bad = sequence_problem(items)
+    if bad:
+        raise MissionError(f"waypoint {bad[0]}: {bad[1]}")
 
 
 def mission_from_plan(waypoints: Sequence[Mapping[str, Any]], frame: RampFrame,
@@ -119,25 +151,35 @@ def mission_from_plan(waypoints: Sequence[Mapping[str, Any]], frame: RampFrame,
     if np.any(t < 0) or np.any(t * 1000 > 0xFFFFFFFF):
         raise MissionError(f"waypoint {int(np.argmax((t < 0) | (t * 1000 > 0xFFFFFFFF)))}: "
                            "t outside 0..4294967 s")
-    if np.any(speed < 0) or np.any(speed * 100 > 0xFFFF):
-        i = int(np.argmax((speed < 0) | (speed * 100 > 0xFFFF)))
-        raise MissionError(f"waypoint {i}: speed {speed[i]} outside 0..655.35 m/s")
+    if np.any(speed < 0) or np.any(speed * 100 > SPEED_MAX_CMS):
+        i = int(np.argmax((speed < 0) | (speed * 100 > SPEED_MAX_CMS)))
+        raise MissionError(f"waypoint {i}: speed {speed[i]} outside 0..{SPEED_MAX_CMS / 100} m/s")
+    # course over ground of the leg leaving each waypoint (the last: its arrival heading)
+    course = np.array(heading_deg, dtype=float)
+    dx, dy = np.diff(x), np.diff(y)
+    moving = np.hypot(dx, dy) > 1e-6
+    course[:-1][moving] = np.degrees(np.arctan2(dy[moving], dx[moving]))
     lat, lon = frame.to_geodetic(x, y)
-    compass = frame.heading_to_compass_deg(heading_deg)
+    compass_heading = np.atleast_1d(frame.heading_to_compass_deg(heading_deg))
+    compass_course = np.atleast_1d(frame.heading_to_compass_deg(course))
     items = tuple(
-        m.MissionItem(mission_id, i, round(la * 1e7), round(lo * 1e7), round(tt * 1000),
-                      round(sp * 100), round(hd * 100) % 36000)
-        for i, (la, lo, tt, sp, hd) in enumerate(
-            zip(np.atleast_1d(lat), np.atleast_1d(lon), t, speed, compass, strict=True))
+        MissionItem(mission_id, i, round(la * 1e7), round(lo * 1e7), round(tt * 1000),
+                    round(sp * 100), round(cc * 100) % 36000, round(hd * 100) % 36000)
+        for i, (la, lo, tt, sp, cc, hd) in enumerate(
+            zip(np.atleast_1d(lat), np.atleast_1d(lon), t, speed, compass_course,
+                compass_heading, strict=True))
     )
-    return Mission(mission_id, Origin.from_frame(frame), items)
+    return Mission(mission_id, items, Origin.from_frame(frame))
 
 
 def plan_from_mission(mission: Mission, frame: RampFrame | None = None) -> list[dict[str, float]]:
     """The mission's waypoints back in the ramp frame of `frame` (default: its own origin)."""
-    frame = frame or mission.origin.to_frame()
-    lat = np.array([it.lat_e7 / 1e7 for it in mission.items])
-    lon = np.array([it.lon_e7 / 1e7 for it in mission.items])
+    if frame is None:
+        if mission.origin is None:
+            raise MissionError("plan_from_mission needs a frame for a mission without origin")
+        frame = mission.origin.to_frame()
+    lat = np.array([it.lat / 1e7 for it in mission.items])
+    lon = np.array([it.lon / 1e7 for it in mission.items])
     x, y = frame.to_ramp(lat, lon)
     heading = frame.compass_to_heading_deg([it.heading_cdeg / 100 for it in mission.items])
     return [
@@ -145,3 +187,11 @@ def plan_from_mission(mission: Mission, frame: RampFrame | None = None) -> list[
          "heading_deg": float(heading[i])}
         for i, it in enumerate(mission.items)
     ]
+
+
+def distance_m(lat_e7: int, lon_e7: int, lat2_e7: int, lon2_e7: int) -> float:
+    """Great-circle distance between two wire positions (haversine, WGS-84 mean radius)."""
+    p1, p2 = math.radians(lat_e7 / 1e7), math.radians(lat2_e7 / 1e7)
+    dp, dl = p2 - p1, math.radians((lon2_e7 - lon_e7) / 1e7)
+    a = math.sin(dp / 2) ** 2 + math.cos(p1) * math.cos(p2) * math.sin(dl / 2) ** 2
+    return 2 * 6371008.8 * math.asin(min(1.0, math.sqrt(a)))

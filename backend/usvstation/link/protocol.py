@@ -1,41 +1,121 @@
-"""Station side of usv-link as sans-IO state machines (protocol/README.md "Station").
+"""Station side of usv-link 2 as sans-IO state machines (protocol/README.md "Station").
 
-Nothing here does I/O or reads a clock: callers pass received bytes and the current
-time `now` (seconds, monotonic) in, and take bytes to send and events out:
+Nothing here does I/O or reads a clock: callers pass received bytes, the monotonic time
+`now` (seconds) in, and take bytes and events out:
 
-    proto = StationProtocol(LinkConfig(), now)
-    events = proto.receive_data(data, now)   # bytes from the boat
+    proto = StationProtocol(LinkConfig(), now, key=key, unix_time=time.time())
+    events = proto.receive_data(data, now)   # bytes from the radio
     events += proto.poll(now)                # timers: heartbeat, retries, link loss
-    wire = proto.data_to_send()              # bytes for the boat
+    wire = proto.data_to_send()              # bytes for the radio
     proto.next_deadline()                    # when poll() is due next
 
-MissionUploader, CommandSender and LinkMonitor are the parts; StationProtocol
-routes messages between them and the codec.
+The parts: `LinkMonitor` (fixed heartbeat schedule, link loss, only the paired boat id
+counts), `RttEstimator` (retry timeouts from measured round trips and the frame airtime
+at the configured baud), `MissionUploader` (windowed BEGIN/ITEM/END), `Readback`
+(USV_MISSION_READ), `CommandSender` (COMMAND_INT keyed by session, seq and code).
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+import random
+from collections import Counter
 from dataclasses import dataclass, field
 from typing import Any
 
-from usvstation.link import messages as m
-from usvstation.link.codec import Encoder, FrameDecoder
-from usvstation.link.mission import Mission
+from usvstation.link import wire
+from usvstation.link.mavlink import usv_recovery as mav
+from usvstation.link.mission import Mission, MissionItem
 
 INF = float("inf")
+ITEM_FRAME_BYTES = 12 + 28 + 13  # signed USV_MISSION_ITEM
+ACK_FRAME_BYTES = 12 + 14 + 13  # signed USV_MISSION_ACK
 
 
 @dataclass(frozen=True)
 class LinkConfig:
-    """Timing of the station side; defaults suit 57600 baud (see README "Timeouts")."""
+    """Station timing; every value is in protocol/README.md "Timeouts and limits"."""
 
-    heartbeat_period_s: float = m.HEARTBEAT_PERIOD_MS / 1000
-    link_timeout_s: float = m.LINK_TIMEOUT_MS / 1000
-    ack_timeout_s: float = 0.3  # MISSION_* and COMMAND answer timeout per attempt
-    max_attempts: int = 10  # per mission message (item, begin, end)
+    boat_id: int = wire.BOAT_ID
+    station_id: int = wire.STATION_ID
+    baud: int = 57600
+    heartbeat_period_s: float = 0.25  # fixed schedule; the boat fails safe after 3 s
+    link_timeout_s: float = 3.0  # no frame from the boat: link down
+    timesync_period_s: float = 1.0
     window: int = 8  # mission items in flight
+    max_attempts: int = 10  # per mission message
     command_attempts: int = 5
+    min_timeout_s: float = 0.2  # radio, serial driver and scheduling latency
+    max_timeout_s: float = 3.0
+    link_id: int = 0  # MAVLink signing link id of this station
+
+    def __post_init__(self) -> None:
+        if not 1 <= self.boat_id <= 254 or not 1 <= self.station_id <= 255:
+            raise ValueError(f"boat_id must be 1..254 and station_id 1..255, got "
+                             f"{self.boat_id}, {self.station_id}")
+        if self.boat_id == self.station_id:
+            raise ValueError(f"boat_id and station_id are both {self.boat_id}")
+        if not 0 < self.heartbeat_period_s <= 0.5:
+            raise ValueError(f"heartbeat_period_s must be in (0, 0.5], got "
+                             f"{self.heartbeat_period_s}")
+        if self.baud <= 0:
+            raise ValueError(f"baud must be positive, got {self.baud}")
+
+    def airtime(self, nbytes: int) -> float:
+        """Seconds to send nbytes at the configured baud (8N1: 10 bits a byte)."""
+        return nbytes * 10 / self.baud
+
+
+# ----------------------------------------------------------------------------- typed reports
+
+
+@dataclass(frozen=True)
+class MissionState:
+    """USV_MISSION_STATE: what the boat holds; the station's truth about missions."""
+
+    uptime_ms: int
+    boot_id: int
+    state: str  # USV_BOAT_STATE name: IDLE, READY, RUNNING, HOLD, DONE, ABORTED, FAILSAFE
+    active_id: int
+    active_crc32: int
+    active_count: int
+    current_seq: int
+    staging: int  # USV_STAGING_STATE
+    staged_id: int
+    staged_crc32: int
+    staged_received: int
+    staged_count: int
+    swap_at_ms: int
+    station_session: int
+    rejected: int
+
+    @classmethod
+    def from_msg(cls, m: Any) -> MissionState:
+        return cls(m.uptime_ms, m.boot_id, wire.BOAT_STATES.get(m.state, str(m.state)),
+                   m.active_id, m.active_crc32, m.active_count, m.current_seq, m.staging,
+                   m.staged_id, m.staged_crc32, m.staged_received, m.staged_count,
+                   m.swap_at_ms, m.station_session, m.rejected)
+
+
+@dataclass(frozen=True)
+class Telemetry:
+    """One position report (GLOBAL_POSITION_INT) with the latest of the other streams."""
+
+    time_s: float
+    lat: float
+    lon: float
+    speed: float  # m/s over ground
+    course_deg: float  # compass
+    heading_deg: float  # compass
+    yaw_rate_dps: float = 0.0  # clockwise positive
+    fix_type: int = 0
+    satellites: int = 0
+    hdop: float = 0.0
+    battery_v: float = 0.0
+    thrust_left: float = 0.0
+    thrust_right: float = 0.0
+    cross_track_m: float = 0.0
+    waypoint_index: int = 0
+    state: str = "IDLE"
 
 
 # ----------------------------------------------------------------------------- events
@@ -43,9 +123,9 @@ class LinkConfig:
 
 @dataclass(frozen=True)
 class LinkUp:
-    """A boat HEARTBEAT with matching protocol version and definitions arrived."""
+    """The paired boat's HEARTBEAT (type SURFACE_BOAT) arrived after silence."""
 
-    heartbeat: m.Heartbeat
+    system_id: int
 
 
 @dataclass(frozen=True)
@@ -54,28 +134,26 @@ class LinkDown:
 
 
 @dataclass(frozen=True)
-class DefinitionMismatch:
-    """The boat speaks another protocol version or definition set: nothing is exchanged."""
-
-    message: str
-    boat_version: int
-    boat_definition_crc: int
+class BoatReport:
+    report: MissionState
+    received_at: float
 
 
 @dataclass(frozen=True)
-class BoatHeartbeat:
-    heartbeat: m.Heartbeat
+class BoatRebooted:
+    old_boot_id: int
+    new_boot_id: int
 
 
 @dataclass(frozen=True)
 class TelemetryReceived:
-    telemetry: m.Telemetry
+    telemetry: Telemetry
     received_at: float
 
 
 @dataclass(frozen=True)
 class StatusTextReceived:
-    severity: m.Severity
+    severity: int  # MAV_SEVERITY
     text: str
 
 
@@ -84,12 +162,13 @@ class UploadProgress:
     mission_id: int
     acked: int
     count: int
-    sent: int = 0  # distinct items sent at least once
+    sent: int = 0
 
 
 @dataclass(frozen=True)
 class UploadResult:
-    """The end of an upload. ok: the boat activated exactly this mission (MISSION_END ACK)."""
+    """ok: the boat acknowledged END (activated, or scheduled the swap). ok False says why;
+    the boat never activates a partial mission, and USV_MISSION_STATE is the final word."""
 
     mission_id: int
     ok: bool
@@ -100,276 +179,103 @@ class UploadResult:
 
 
 @dataclass(frozen=True)
-class CommandOutcome:
-    """The answer to a COMMAND; result None when no COMMAND_ACK came (error says why)."""
+class ReadbackResult:
+    mission_id: int
+    items: tuple[MissionItem, ...] | None  # None: failed (error says why)
+    error: str = ""
 
-    command_id: int
-    command: m.CommandCode
-    result: m.CommandResult | None
-    state: m.State | None
+
+@dataclass(frozen=True)
+class CommandOutcome:
+    """The boat's answer to a command, or result None with the error (never open-ended)."""
+
+    seq: int
+    command: str
+    result: int | None  # MAV_RESULT
+    reason: str = ""  # USV_COMMAND_REASON name when not accepted
     error: str = ""
 
     @property
     def accepted(self) -> bool:
-        return self.result == m.CommandResult.ACCEPTED
+        return self.result == mav.MAV_RESULT_ACCEPTED
 
 
-Event = Any  # one of the dataclasses above
+Event = Any
 
 
-# ----------------------------------------------------------------------------- uploader
+# ----------------------------------------------------------------------------- timing
 
 
-class MissionUploader:
-    """Reliable upload: BEGIN, then items with a sliding window, then END.
+class RttEstimator:
+    """Retry timeout from measured round trips (Jacobson/Karels, RFC 6298 constants),
+    never below min_timeout_s nor two frame airtimes at the baud, never above
+    max_timeout_s. Round trips count from the frame's departure at the baud."""
 
-    Each message is retransmitted after `ack_timeout_s` without its ACK, at most
-    `max_attempts` times; a MISSION_NAK ends the upload with its reason, except
-    MISSING_ITEMS, which re-sends the missing item. The boat activates the mission
-    only on its END ACK, so a failed upload never leaves a partial mission active.
-    """
+    def __init__(self, cfg: LinkConfig) -> None:
+        self.cfg = cfg
+        self.srtt: float | None = None
+        self.rttvar = 0.0
+        self.floor = max(cfg.min_timeout_s,
+                         2 * cfg.airtime(ITEM_FRAME_BYTES + ACK_FRAME_BYTES) + 0.02)
 
-    def __init__(self, mission: Mission, config: LinkConfig, now: float) -> None:
-        self.mission = mission
-        self.cfg = config
-        self.started = now
-        self.phase = "begin"
-        self.acked: set[int] = set()
-        self.attempts: dict[Any, int] = {}
-        self.deadlines: dict[Any, float] = {}  # key ("begin" | "end" | index) -> ack deadline
-        self.next_index = 0
-        self.retransmissions = 0
-        self.result: UploadResult | None = None
-
-    @property
-    def done(self) -> bool:
-        return self.result is not None
-
-    @property
-    def items_sent(self) -> int:
-        return sum(1 for key in self.attempts if isinstance(key, int))
-
-    def start(self, now: float) -> list[Any]:
-        return self._send("begin", now)
-
-    def _message(self, key: Any) -> Any:
-        if key == "begin":
-            return self.mission.begin()
-        if key == "end":
-            return self.mission.end()
-        return self.mission.items[key]
-
-    def _send(self, key: Any, now: float) -> list[Any]:
-        n = self.attempts.get(key, 0)
-        if n >= self.cfg.max_attempts:
-            what = f"item {key}" if isinstance(key, int) else f"MISSION_{str(key).upper()}"
-            self._finish(False, f"{what} not acknowledged after {n} attempts", now)
-            return []
-        if n:
-            self.retransmissions += 1
-        self.attempts[key] = n + 1
-        self.deadlines[key] = now + self.cfg.ack_timeout_s
-        return [self._message(key)]
-
-    def _finish(self, ok: bool, reason: str, now: float) -> None:
-        self.deadlines.clear()
-        self.result = UploadResult(self.mission.mission_id, ok, reason, self.mission.count,
-                                   self.retransmissions, now - self.started)
-
-    def _fill_window(self, now: float) -> list[Any]:
-        out: list[Any] = []
-        count = self.mission.count
-        while self.phase == "items" and len(self.deadlines) < self.cfg.window:
-            while self.next_index < count and self.next_index in self.acked:
-                self.next_index += 1
-            if self.next_index >= count:
-                break
-            out += self._send(self.next_index, now)
-            self.next_index += 1
-        if self.phase == "items" and len(self.acked) == count:
-            self.phase = "end"
-            out += self._send("end", now)
-        return out
-
-    def handle(self, msg: Any, now: float) -> tuple[list[Any], list[Event]]:
-        """A MISSION_ACK or MISSION_NAK from the boat."""
-        if self.done or msg.mission_id != self.mission.mission_id:
-            return [], []
-        if isinstance(msg, m.MissionNak):
-            return self._nak(msg, now)
-        stage = msg.stage
-        if stage == m.MissionStage.BEGIN and self.phase == "begin":
-            self.deadlines.pop("begin", None)
-            self.phase = "items"
-            out = self._fill_window(now)
-            return out, [UploadProgress(self.mission.mission_id, 0, self.mission.count,
-                                        self.items_sent)]
-        if stage == m.MissionStage.ITEM and msg.index < self.mission.count:
-            self.deadlines.pop(msg.index, None)
-            if msg.index in self.acked or self.phase != "items":
-                return self._fill_window(now), []
-            self.acked.add(msg.index)
-            out = self._fill_window(now)
-            progress = UploadProgress(self.mission.mission_id, len(self.acked),
-                                      self.mission.count, self.items_sent)
-            return out, [progress]
-        if stage == m.MissionStage.END and self.phase == "end":
-            self._finish(True, "activated", now)
-            return [], [self.result]
-        return [], []
-
-    def _nak(self, nak: m.MissionNak, now: float) -> tuple[list[Any], list[Event]]:
-        reason = m.NakReason(nak.reason) if nak.reason in m.NakReason._value2member_map_ \
-            else nak.reason
-        if reason == m.NakReason.MISSING_ITEMS and self.phase == "end" \
-                and nak.index < self.mission.count:
-            self.acked.discard(nak.index)  # the boat lost it: back to the items phase
-            self.deadlines.pop("end", None)
-            self.phase = "items"
-            self.next_index = min(self.next_index, nak.index)
-            return self._fill_window(now), []
-        if nak.stage == m.MissionStage.ITEM:
-            what = f"item {nak.index}"
+    def sample(self, rtt: float) -> None:
+        if rtt <= 0:
+            return
+        if self.srtt is None:
+            self.srtt, self.rttvar = rtt, rtt / 2
         else:
-            what = f"MISSION_{m.MissionStage(nak.stage).name}" \
-                if nak.stage in m.MissionStage._value2member_map_ else "a mission message"
-        name = reason.name if isinstance(reason, m.NakReason) else f"reason {reason}"
-        self._finish(False, f"boat refused {what}: {name}", now)
-        return [], [self.result]
-
-    def poll(self, now: float) -> tuple[list[Any], list[Event]]:
-        """Retransmit what timed out; finish when a message ran out of attempts."""
-        if self.done:
-            return [], []
-        out: list[Any] = []
-        for key, deadline in sorted(self.deadlines.items(), key=lambda kv: kv[1]):
-            if deadline <= now:
-                out += self._send(key, now)
-                if self.done:
-                    return [], [self.result]
-        return out, []
-
-    def fail(self, reason: str, now: float) -> list[Event]:
-        if self.done:
-            return []
-        self._finish(False, reason, now)
-        return [self.result]
-
-    def next_deadline(self) -> float:
-        return min(self.deadlines.values(), default=INF)
-
-
-# ----------------------------------------------------------------------------- commands
-
-
-class CommandSender:
-    """COMMAND with ACK, timeout and bounded retry; retries reuse the command_id."""
-
-    def __init__(self, config: LinkConfig) -> None:
-        self.cfg = config
-        self._next_id = 1
-        self.pending: dict[int, tuple[m.Command, float, int]] = {}  # id -> msg, deadline, n
-
-    def send(self, command: m.CommandCode, now: float, mission_id: int = 0) -> tuple[int, Any]:
-        cid = self._next_id
-        self._next_id = self._next_id % 0xFFFF + 1
-        msg = m.Command(cid, int(command), mission_id)
-        self.pending[cid] = (msg, now + self.cfg.ack_timeout_s, 1)
-        return cid, msg
-
-    def handle(self, ack: m.CommandAck) -> list[Event]:
-        sent = self.pending.pop(ack.command_id, None)
-        if sent is None or sent[0].command != ack.command:
-            return []  # a duplicate answer to a retry, or not an answer to this command
-        result = m.CommandResult(ack.result) if ack.result in m.CommandResult._value2member_map_ \
-            else None
-        state = m.State(ack.state) if ack.state in m.State._value2member_map_ else None
-        err = "" if result is not None else f"unknown result code {ack.result}"
-        return [CommandOutcome(ack.command_id, m.CommandCode(ack.command), result, state, err)]
-
-    def poll(self, now: float) -> tuple[list[Any], list[Event]]:
-        out, events = [], []
-        for cid, (msg, deadline, n) in list(self.pending.items()):
-            if deadline > now:
-                continue
-            if n >= self.cfg.command_attempts:
-                del self.pending[cid]
-                events.append(CommandOutcome(cid, m.CommandCode(msg.command), None, None,
-                                             f"no COMMAND_ACK after {n} attempts"))
-            else:
-                self.pending[cid] = (msg, now + self.cfg.ack_timeout_s, n + 1)
-                out.append(msg)
-        return out, events
-
-    def fail_all(self, reason: str) -> list[Event]:
-        events = [CommandOutcome(cid, m.CommandCode(msg.command), None, None, reason)
-                  for cid, (msg, _, _) in self.pending.items()]
-        self.pending.clear()
-        return events
-
-    def next_deadline(self) -> float:
-        return min((d for _, d, _ in self.pending.values()), default=INF)
+            self.rttvar = 0.75 * self.rttvar + 0.25 * abs(self.srtt - rtt)
+            self.srtt = 0.875 * self.srtt + 0.125 * rtt
+    @property
+    def timeout(self) -> float:
+        if self.srtt is None:  # nothing measured yet: a window's airtime and a margin
+            base = self.cfg.airtime(self.cfg.window * ITEM_FRAME_BYTES + ACK_FRAME_BYTES) * 2 \
+                + 0.25
+        else:
+            base = self.srtt + 4 * self.rttvar
+        return min(max(base, self.floor), self.cfg.max_timeout_s)
 
 
 # ----------------------------------------------------------------------------- link monitor
 
 
-def mismatch_message(peer: str, hb: m.Heartbeat, me: str = "station") -> str:
-    return (f"protocol definition mismatch: {peer} speaks {m.PROTOCOL} v{hb.protocol_version} "
-            f"(definitions 0x{hb.definition_crc:08X}), {me} speaks {m.PROTOCOL} "
-            f"v{m.PROTOCOL_VERSION} (definitions 0x{m.DEFINITION_CRC:08X})")
-
-
-def heartbeat_matches(hb: m.Heartbeat) -> bool:
-    return hb.protocol_version == m.PROTOCOL_VERSION and hb.definition_crc == m.DEFINITION_CRC
-
-
 class LinkMonitor:
-    """Heartbeat sender and link-loss detector: the link is up from a matching boat
-    HEARTBEAT until no valid frame arrived for `link_timeout_s`."""
+    """Heartbeats on a fixed schedule; link up from the paired boat's HEARTBEAT until no
+    frame from that system id arrived for link_timeout_s. Frames from other ids are
+    counted per id, never taken as the boat's."""
 
-    def __init__(self, config: LinkConfig, now: float) -> None:
-        self.cfg = config
-        self.started = now
+    def __init__(self, cfg: LinkConfig, now: float) -> None:
+        self.cfg = cfg
         self.link_up = False
-        self.mismatch: DefinitionMismatch | None = None
         self.last_rx = -INF
         self.next_heartbeat = now
+        self.other_systems: Counter[int] = Counter()
+        self.echoes = 0
 
-    def heartbeat(self, now: float) -> m.Heartbeat:
-        return m.Heartbeat(m.DEFINITION_CRC, m.PROTOCOL_VERSION, m.Sender.STATION, 0, 0, 0, 0,
-                           int((now - self.started) * 1000) & 0xFFFFFFFF)
+    def due_heartbeat(self, now: float) -> bool:
+        if now < self.next_heartbeat:
+            return False
+        period = self.cfg.heartbeat_period_s
+        self.next_heartbeat += period
+        if self.next_heartbeat <= now:  # fell behind (a stalled loop): keep the grid
+            self.next_heartbeat += ((now - self.next_heartbeat) // period + 1) * period
+        return True
 
-    def on_frame(self, now: float) -> None:
-        if self.link_up:
-            self.last_rx = now
-
-    def on_heartbeat(self, hb: m.Heartbeat, now: float) -> list[Event]:
-        if not heartbeat_matches(hb):
-            was = self.mismatch
-            self.mismatch = DefinitionMismatch(mismatch_message("boat", hb), hb.protocol_version,
-                                               hb.definition_crc)
-            events: list[Event] = [] if was == self.mismatch else [self.mismatch]
-            if self.link_up:
-                self.link_up = False
-                events.append(LinkDown(self.mismatch.message))
-            return events
-        self.mismatch = None
+    def on_boat_frame(self, msg: Any, now: float) -> list[Event]:
         self.last_rx = now
         if self.link_up:
             return []
-        self.link_up = True
-        return [LinkUp(hb)]
+        if msg.get_type() == "HEARTBEAT" and msg.type == mav.MAV_TYPE_SURFACE_BOAT:
+            self.link_up = True
+            return [LinkUp(self.cfg.boat_id)]
+        return []
 
-    def poll(self, now: float) -> tuple[list[Any], list[Event]]:
-        out: list[Any] = []
-        if now >= self.next_heartbeat:
-            out.append(self.heartbeat(now))
-            self.next_heartbeat = now + self.cfg.heartbeat_period_s
+    def poll(self, now: float) -> list[Event]:
         if self.link_up and now - self.last_rx > self.cfg.link_timeout_s:
             self.link_up = False
-            return out, [LinkDown(f"no frame from the boat for {self.cfg.link_timeout_s:.1f} s")]
-        return out, []
+            return [LinkDown(f"no frame from boat {self.cfg.boat_id} for "
+                             f"{self.cfg.link_timeout_s:.1f} s")]
+        return []
 
     def lost(self, reason: str) -> list[Event]:
         if not self.link_up:
@@ -384,28 +290,344 @@ class LinkMonitor:
         return d
 
 
+# ----------------------------------------------------------------------------- uploader
+
+BEGIN, END = -1, -2  # keys of the non-item messages
+STAGE_BEGIN, STAGE_ITEM, STAGE_END, STAGE_READ = 1, 2, 3, 4
+
+
+class MissionUploader:
+    """BEGIN, then items in a sliding window (the boat's ACK.seq is cumulative: items
+    staged contiguously from 0), then END. Each message is retried after the adaptive
+    timeout, at most max_attempts times; the first missing item is also sent again at
+    once on the second ACK that does not advance (fast retransmit). A refusal ends the
+    upload with its reason, except MISSING_ITEMS at END, which goes back to the first
+    missing item."""
+
+    def __init__(self, mission: Mission, cfg: LinkConfig, rtt: RttEstimator, now: float,
+                 swap_at_ms: int = 0) -> None:
+        self.mission, self.cfg, self.rtt = mission, cfg, rtt
+        self.swap_at_ms = swap_at_ms
+        self.started = now
+        self.phase = "begin"
+        self.base = 0  # items acknowledged contiguously
+        self.attempts: Counter[int] = Counter()
+        self.deadlines: dict[int, float] = {}
+        self.sent_at: dict[int, float] = {}
+        self.next_index = 0
+        self.retransmissions = 0
+        self.dup_acks = 0  # ACKs that did not advance base since it last moved
+        self.result: UploadResult | None = None
+
+    @property
+    def done(self) -> bool:
+        return self.result is not None
+
+    def _send(self, key: int, now: float, ahead: int = 0) -> list[tuple[str, Any]]:
+        n = self.attempts[key]
+        if n >= self.cfg.max_attempts:
+            what = {BEGIN: "USV_MISSION_BEGIN", END: "USV_MISSION_END"}.get(key, f"item {key}")
+            self._finish(False, f"{what} not acknowledged after {n} attempts", now)
+            return []
+        if n:
+            self.retransmissions += 1
+        self.attempts[key] = n + 1
+        self.sent_at[key] = now if n == 0 else -INF  # Karn: no RTT sample from a retry
+        self.deadlines[key] = now + self.rtt.timeout + ahead * self.cfg.airtime(ITEM_FRAME_BYTES)
+        return [("begin" if key == BEGIN else "end" if key == END else "item", key)]
+
+    def mark(self, key: int, departure: float) -> None:
+        """The frame of `key` leaves the station at `departure` (the line at the baud):
+        its retry deadline and its RTT sample count from then."""
+        if key in self.deadlines:
+            self.deadlines[key] = departure + self.rtt.timeout
+            if self.sent_at.get(key, -INF) > -INF:
+                self.sent_at[key] = departure
+
+    def _finish(self, ok: bool, reason: str, now: float) -> None:
+        self.deadlines.clear()
+        self.result = UploadResult(self.mission.mission_id, ok, reason, self.mission.count,
+                                   self.retransmissions, now - self.started)
+
+    def start(self, now: float) -> list[tuple[str, Any]]:
+        return self._send(BEGIN, now)
+
+    def _fill(self, now: float) -> list[tuple[str, Any]]:
+        out: list[tuple[str, Any]] = []
+        count = self.mission.count
+        if self.phase != "items":
+            return out
+        self.next_index = max(self.next_index, self.base)
+        in_flight = sum(1 for k in self.deadlines if k >= 0)
+        while self.next_index < count and in_flight < self.cfg.window:
+            if self.next_index not in self.deadlines:
+                out += self._send(self.next_index, now, ahead=len(out))
+                in_flight += 1
+            self.next_index += 1
+        if self.base >= count:
+            self.phase = "end"
+            out += self._send(END, now)
+        return out
+
+    def _sample(self, key: int, now: float) -> None:
+        t = self.sent_at.get(key, -INF)
+        if t > -INF:
+            self.rtt.sample(now - t)
+
+    def handle(self, ack: Any, now: float) -> tuple[list[tuple[str, Any]], list[Event]]:
+        """A USV_MISSION_ACK from the boat (already known to be for this mission)."""
+        if self.done:
+            return [], []
+        ok = ack.result == mav.USV_MISSION_ACCEPTED
+        if ack.stage == STAGE_BEGIN and self.phase == "begin":
+            if not ok:
+                return self._refused("USV_MISSION_BEGIN", ack, now)
+            self._sample(BEGIN, now)
+            self.deadlines.pop(BEGIN, None)
+            self.phase = "items"
+            self.base = min(ack.seq, self.mission.count)
+            return self._fill(now), [self._progress()]
+        if ack.stage == STAGE_ITEM and self.phase == "items":
+            if not ok and ack.result != mav.USV_MISSION_BAD_SEQ:
+                return self._refused(f"item {ack.seq}", ack, now)
+            if ack.seq > self.base:
+                covered = range(self.base, min(ack.seq, self.mission.count))
+                if all(self.sent_at.get(k, -INF) > -INF for k in covered):
+                    self._sample(ack.seq - 1, now)  # Karn: nothing it covers was resent
+                for k in range(self.base, min(ack.seq, self.mission.count)):
+                    self.deadlines.pop(k, None)
+                self.base = min(ack.seq, self.mission.count)
+                self.dup_acks = 0
+                return self._fill(now), [self._progress()]
+            self.dup_acks += 1
+            out: list[tuple[str, Any]] = []
+            if self.dup_acks == 2 and self.base in self.deadlines:
+                # fast retransmit: two later items arrived, so `base` was lost
+                out = self._send(self.base, now)
+                if self.done:
+                    return [], [self.result]
+            return out + self._fill(now), []
+        if ack.stage == STAGE_END and self.phase == "end":
+            if ack.result == mav.USV_MISSION_MISSING_ITEMS and ack.seq < self.mission.count:
+                self.deadlines.pop(END, None)
+                self.phase, self.base, self.next_index = "items", ack.seq, ack.seq
+                return self._fill(now), []
+            if not ok:
+                return self._refused("USV_MISSION_END", ack, now)
+            self._finish(True, "activated" if not self.swap_at_ms else "swap scheduled", now)
+            return [], [self.result]
+        return [], []
+
+    def _refused(self, what: str, ack: Any, now: float) -> tuple[list, list[Event]]:
+        name = wire.MISSION_RESULTS.get(ack.result, f"result {ack.result}")
+        self._finish(False, f"boat refused {what}: {name}", now)
+        return [], [self.result]
+
+    def _progress(self) -> UploadProgress:
+        sent = sum(1 for k in self.attempts if k >= 0)
+        return UploadProgress(self.mission.mission_id, self.base, self.mission.count, sent)
+
+    def poll(self, now: float) -> tuple[list[tuple[str, Any]], list[Event]]:
+        if self.done:
+            return [], []
+        out: list[tuple[str, Any]] = []
+        for key, deadline in sorted(self.deadlines.items(), key=lambda kv: kv[1]):
+            if deadline <= now:
+                out += self._send(key, now, ahead=len(out))
+                if self.done:
+                    return [], [self.result]
+        return out, []
+
+    def fail(self, reason: str, now: float) -> list[Event]:
+        if self.done:
+            return []
+        self._finish(False, reason, now)
+        return [self.result]
+
+    def next_deadline(self) -> float:
+        return min(self.deadlines.values(), default=INF)
+
+
+class Readback:
+    """Read a mission back item by item (USV_MISSION_READ), windowed and retried."""
+
+    def __init__(self, mission_id: int, count: int, cfg: LinkConfig, rtt: RttEstimator) -> None:
+        self.mission_id, self.count, self.cfg, self.rtt = mission_id, count, cfg, rtt
+        self.items: dict[int, MissionItem] = {}
+        self.attempts: Counter[int] = Counter()
+        self.deadlines: dict[int, float] = {}
+        self.result: ReadbackResult | None = None
+
+    def _fill(self, now: float) -> list[int]:
+        out = []
+        for seq in range(self.count):
+            if len(self.deadlines) >= self.cfg.window:
+                break
+            if seq in self.items or seq in self.deadlines:
+                continue
+            out += self._send(seq, now, len(out))
+        return out
+
+    def _send(self, seq: int, now: float, ahead: int) -> list[int]:
+        if self.attempts[seq] >= self.cfg.max_attempts:
+            self.result = ReadbackResult(self.mission_id, None,
+                                         f"item {seq} not read after {self.attempts[seq]} "
+                                         "attempts")
+            self.deadlines.clear()
+            return []
+        self.attempts[seq] += 1
+        self.deadlines[seq] = now + self.rtt.timeout + ahead * self.cfg.airtime(ACK_FRAME_BYTES)
+        return [seq]
+
+    def mark(self, seq: int, departure: float) -> None:
+        if seq in self.deadlines:
+            self.deadlines[seq] = departure + self.rtt.timeout
+
+    def start(self, now: float) -> list[int]:
+        return self._fill(now)
+
+    def on_item(self, it: MissionItem, now: float) -> tuple[list[int], list[Event]]:
+        if self.result is not None or not 0 <= it.seq < self.count:
+            return [], []
+        self.items[it.seq] = it
+        self.deadlines.pop(it.seq, None)
+        if len(self.items) == self.count:
+            self.result = ReadbackResult(self.mission_id,
+                                         tuple(self.items[i] for i in range(self.count)))
+            return [], [self.result]
+        return self._fill(now), []
+
+    def on_refusal(self, ack: Any) -> list[Event]:
+        if self.result is not None:
+            return []
+        name = wire.MISSION_RESULTS.get(ack.result, str(ack.result))
+        self.result = ReadbackResult(self.mission_id, None, f"boat refused the read: {name}")
+        self.deadlines.clear()
+        return [self.result]
+
+    def poll(self, now: float) -> tuple[list[int], list[Event]]:
+        if self.result is not None:
+            return [], []
+        out: list[int] = []
+        for seq, d in sorted(self.deadlines.items(), key=lambda kv: kv[1]):
+            if d <= now:
+                out += self._send(seq, now, len(out))
+                if self.result is not None:
+                    return [], [self.result]
+        return out, []
+
+    def next_deadline(self) -> float:
+        return min(self.deadlines.values(), default=INF)
+
+
+# ----------------------------------------------------------------------------- commands
+
+
+@dataclass
+class _Pending:
+    name: str
+    code: int
+    x: int
+    y: int
+    deadline: float
+    attempts: int
+
+
+class CommandSender:
+    """COMMAND_INT with param1 = seq, param2 = session; an ACK counts only when its
+    command and result_param2 match a pending (seq, code) of this session. Retries reuse
+    the seq; after command_attempts the outcome is "no answer", so every call ends."""
+
+    def __init__(self, cfg: LinkConfig, rtt: RttEstimator, session: int) -> None:
+        self.cfg, self.rtt, self.session = cfg, rtt, session
+        self._next_seq = random.Random(session).randrange(1, 1 << 20)
+        self.pending: dict[int, _Pending] = {}
+
+    def send(self, name: str, now: float, x: int = 0, y: int = 0) -> int:
+        if name not in wire.COMMANDS:
+            raise ValueError(f"command: unknown {name!r}; known: {', '.join(wire.COMMANDS)}")
+        seq = self._next_seq
+        self._next_seq = self._next_seq % ((1 << 24) - 1) + 1
+        self.pending[seq] = _Pending(name, wire.COMMANDS[name], x, y,
+                                     now + self.rtt.timeout, 1)
+        return seq
+
+    def handle(self, ack: Any) -> list[Event]:
+        p = self.pending.get(ack.result_param2)
+        if p is None or p.code != ack.command:
+            return []  # not the answer to a command of this session
+        if ack.result == mav.MAV_RESULT_IN_PROGRESS:
+            return []
+        del self.pending[ack.result_param2]
+        reason = "" if ack.result == mav.MAV_RESULT_ACCEPTED else \
+            wire.COMMAND_REASONS.get(ack.progress, str(ack.progress))
+        return [CommandOutcome(ack.result_param2, p.name, ack.result, reason)]
+
+    def due(self, now: float) -> tuple[list[int], list[Event]]:
+        resend, events = [], []
+        for seq, p in list(self.pending.items()):
+            if p.deadline > now:
+                continue
+            if p.attempts >= self.cfg.command_attempts:
+                del self.pending[seq]
+                events.append(CommandOutcome(seq, p.name, None,
+                                             error=f"no COMMAND_ACK after {p.attempts} attempts"))
+            else:
+                p.attempts += 1
+                p.deadline = now + self.rtt.timeout
+                resend.append(seq)
+        return resend, events
+
+    def fail_all(self, reason: str) -> list[Event]:
+        events = [CommandOutcome(seq, p.name, None, error=reason)
+                  for seq, p in self.pending.items()]
+        self.pending.clear()
+        return events
+
+    def next_deadline(self) -> float:
+        return min((p.deadline for p in self.pending.values()), default=INF)
+
+
 # ----------------------------------------------------------------------------- station
 
 
 @dataclass
 class StationProtocol:
-    """The whole station side: codec + link monitor + uploader + command sender."""
+    """The whole station side: codec + link monitor + uploader + readback + commands."""
 
     config: LinkConfig = field(default_factory=LinkConfig)
     now: float = 0.0
-    on_send: Callable[[Any], None] | None = None
+    key: bytes | None = None
+    unix_time: float = wire.EPOCH_2015 + 3.0e8  # wall clock at `now`, for signing
+    session: int | None = None
 
     def __post_init__(self) -> None:
-        self.encoder = Encoder()
-        self.decoder = FrameDecoder()
-        self.monitor = LinkMonitor(self.config, self.now)
-        self.commands = CommandSender(self.config)
+        cfg = self.config
+        if self.session is None:
+            self.session = random.SystemRandom().randrange(1, 1 << 24)
+        self._t0 = self.now
+        self.codec = wire.Codec(cfg.station_id, wire.STATION_COMPONENT, self.key,
+                                link_id=cfg.link_id, timestamp=self._stamp(self.now),
+                                allow_unsigned=(mav.MAVLINK_MSG_ID_RADIO_STATUS,))
+        self.monitor = LinkMonitor(cfg, self.now)
+        self.rtt = RttEstimator(cfg)
+        self.commands = CommandSender(cfg, self.rtt, self.session)
         self.upload: MissionUploader | None = None
-        self.boat_heartbeat: m.Heartbeat | None = None
-        self.telemetry: m.Telemetry | None = None
+        self.readback: Readback | None = None
+        self.report: MissionState | None = None
+        self.report_at = -INF
+        self.telemetry: Telemetry | None = None
+        self.latest: dict[str, Any] = {}  # latest message of each type from the boat
+        self.radio: Any = None  # latest RADIO_STATUS
+        self.refused: Counter[str] = Counter()
+        self.frames_lost = 0
+        self._last_seq: int | None = None
+        self.next_timesync = self.now
+        self._timesync_sent: dict[int, float] = {}
+        self.clock_offset_s: float | None = None  # boat uptime - station now
         self._out = bytearray()
-        self.bytes_sent = 0
-        self.bytes_received = 0
+        self.bytes_sent = self.bytes_received = 0
+        self.tx_free_at = self.now  # when our side of the line (at the baud) is idle
 
     # ---- state
     @property
@@ -413,100 +635,234 @@ class StationProtocol:
         return self.monitor.link_up
 
     @property
-    def mismatch(self) -> DefinitionMismatch | None:
-        return self.monitor.mismatch
+    def other_systems(self) -> Counter[int]:
+        return self.monitor.other_systems
+
+    def _stamp(self, now: float) -> int:
+        return wire.signing_time(self.unix_time + (now - self._t0))
+
+    def boat_uptime_ms(self, now: float) -> int | None:
+        """The boat's uptime now, from TIMESYNC (else the last USV_MISSION_STATE)."""
+        if self.clock_offset_s is not None:
+            return int((now + self.clock_offset_s) * 1000)
+        if self.report is not None:
+            return self.report.uptime_ms + int((now - self.report_at) * 1000)
+        return None
 
     # ---- input
     def receive_data(self, data: bytes, now: float) -> list[Event]:
         self.bytes_received += len(data)
+        msgs, refused = self.codec.feed(data)
+        for r in refused:
+            self.refused[r.reason] += 1
         events: list[Event] = []
-        for msg in self.decoder.feed(data):
+        for msg in msgs:
             events += self._handle(msg, now)
         return events + self.poll(now)
 
     def _handle(self, msg: Any, now: float) -> list[Event]:
-        if isinstance(msg, m.Heartbeat):
-            if msg.sender == m.Sender.STATION and heartbeat_matches(msg):
-                return []  # our own heartbeat echoed by a looped-back line: not the boat
-            events = self.monitor.on_heartbeat(msg, now)
-            if heartbeat_matches(msg):
-                self.boat_heartbeat = msg
-                events.append(BoatHeartbeat(msg))
+        kind = msg.get_type()
+        if kind == "RADIO_STATUS":
+            self.radio = msg  # the radio's own report (its own system id)
+            return []
+        src = msg.get_srcSystem()
+        if src == self.config.station_id:
+            self.monitor.echoes += 1  # our own frames looped back
+            return []
+        if src != self.config.boat_id:
+            self.monitor.other_systems[src] += 1
+            return []
+        events = self.monitor.on_boat_frame(msg, now)
+        seq = msg.get_seq()
+        if self._last_seq is not None:
+            self.frames_lost += (seq - self._last_seq - 1) % 256  # MAVLink sequence gaps
+        self._last_seq = seq
+        self.latest[kind] = msg
+        if kind == "USV_MISSION_STATE":
+            rep = MissionState.from_msg(msg)
+            if self.report is not None and rep.boot_id != self.report.boot_id:
+                events.append(BoatRebooted(self.report.boot_id, rep.boot_id))
+                self.clock_offset_s = None
+            self.report, self.report_at = rep, now
+            events.append(BoatReport(rep, now))
+        elif kind == "GLOBAL_POSITION_INT":
+            self.telemetry = self._telemetry(msg)
+            events.append(TelemetryReceived(self.telemetry, now))
+        elif kind == "COMMAND_ACK":
+            if msg.target_system in (0, self.config.station_id):
+                events += self.commands.handle(msg)
+        elif kind == "USV_MISSION_ACK":
+            events += self._mission_ack(msg, now)
+        elif kind == "USV_MISSION_ITEM":
+            rb = self.readback
+            if rb is not None and msg.mission_id == rb.mission_id:
+                seqs, ev = rb.on_item(MissionItem.from_msg(msg), now)
+                self._queue_reads(seqs, now)
+                events += ev
+        elif kind == "STATUSTEXT":
+            events.append(StatusTextReceived(msg.severity, msg.text))
+        elif kind == "TIMESYNC":
+            sent = self._timesync_sent.pop(msg.ts1, None)
+            if sent is not None and msg.tc1 > 0:
+                rtt = now - sent
+                self.rtt.sample(rtt)
+                self.clock_offset_s = msg.tc1 / 1e9 + rtt / 2 - now
+        return events
+
+    def _mission_ack(self, ack: Any, now: float) -> list[Event]:
+        up, rb = self.upload, self.readback
+        if ack.stage == STAGE_READ:
+            if rb is not None and ack.mission_id == rb.mission_id:
+                return rb.on_refusal(ack)
+            return []
+        if up is not None and ack.mission_id == up.mission.mission_id:
+            out, events = up.handle(ack, now)
+            self._queue_upload(out, now)
             return events
-        if not self.monitor.link_up:
-            return []  # nothing is trusted before a matching handshake
-        self.monitor.on_frame(now)
-        if isinstance(msg, m.Telemetry):
-            self.telemetry = msg
-            return [TelemetryReceived(msg, now)]
-        if isinstance(msg, m.MissionAck | m.MissionNak) and self.upload is not None:
-            out, events = self.upload.handle(msg, now)
-            self._queue(out)
-            return events
-        if isinstance(msg, m.CommandAck):
-            return self.commands.handle(msg)
-        if isinstance(msg, m.StatusText):
-            sev = m.Severity(msg.severity) if msg.severity in m.Severity._value2member_map_ \
-                else m.Severity.INFO
-            return [StatusTextReceived(sev, msg.text)]
         return []
+
+    def _telemetry(self, gp: Any) -> Telemetry:
+        get = self.latest.get
+        gps, att = get("GPS_RAW_INT"), get("ATTITUDE")
+        sysst, thr, nav = get("SYS_STATUS"), get("USV_THRUST"), get("NAV_CONTROLLER_OUTPUT")
+        vn, ve = gp.vx / 100, gp.vy / 100
+        from math import atan2, degrees, hypot
+
+        speed = hypot(vn, ve)  # current, unlike VFR_HUD (1 Hz)
+        course = degrees(atan2(ve, vn)) % 360 if hypot(vn, ve) > 0.01 else \
+            (gp.hdg / 100 if gp.hdg != 0xFFFF else 0.0)
+        state = self.report.state if self.report is not None else "IDLE"
+        return Telemetry(
+            time_s=gp.time_boot_ms / 1000, lat=gp.lat / 1e7, lon=gp.lon / 1e7,
+            speed=round(speed, 3), course_deg=round(course, 2),
+            heading_deg=gp.hdg / 100 if gp.hdg != 0xFFFF else 0.0,
+            yaw_rate_dps=round(degrees(att.yawspeed), 3) if att is not None else 0.0,
+            fix_type=gps.fix_type if gps is not None else 0,
+            satellites=gps.satellites_visible if gps is not None else 0,
+            hdop=gps.eph / 100 if gps is not None and gps.eph != 0xFFFF else 0.0,
+            battery_v=sysst.voltage_battery / 1000 if sysst is not None else 0.0,
+            thrust_left=thr.left_pm / 1000 if thr is not None else 0.0,
+            thrust_right=thr.right_pm / 1000 if thr is not None else 0.0,
+            cross_track_m=round(thr.cross_track, 3) if thr is not None else
+            (nav.xtrack_error if nav is not None else 0.0),
+            waypoint_index=self.report.current_seq if self.report is not None else 0,
+            state=state)
 
     def poll(self, now: float) -> list[Event]:
         self.now = now
-        out, events = self.monitor.poll(now)
-        self._queue(out)
+        events = self.monitor.poll(now)
         if events:  # link lost: pending work cannot complete
             reason = events[-1].reason
-            events += self.commands.fail_all(f"link lost: {reason}")
-            if self.upload is not None:
-                events += self.upload.fail(f"link lost during upload: {reason}", now)
+            events += self._fail_pending(f"link lost: {reason}", now)
+        if self.monitor.due_heartbeat(now):
+            self._send(self.codec.mav.heartbeat_encode(
+                mav.MAV_TYPE_GCS, mav.MAV_AUTOPILOT_INVALID, 0, 0, mav.MAV_STATE_ACTIVE), now)
+        if now >= self.next_timesync:
+            self.next_timesync = now + self.config.timesync_period_s
+            ts1 = int(now * 1e9) & 0x7FFFFFFFFFFFFFFF
+            self._timesync_sent = {k: v for k, v in self._timesync_sent.items()
+                                   if now - v < 5.0}
+            self._timesync_sent[ts1] = self._send(self.codec.mav.timesync_encode(0, ts1), now)
         if self.upload is not None:
             out, ev = self.upload.poll(now)
-            self._queue(out)
+            self._queue_upload(out, now)
             events += ev
-        out, ev = self.commands.poll(now)
-        self._queue(out)
+        if self.readback is not None:
+            seqs, ev = self.readback.poll(now)
+            self._queue_reads(seqs, now)
+            events += ev
+        resend, ev = self.commands.due(now)
+        for seq in resend:
+            self._send_command(seq, now)
         return events + ev
+
+    def _fail_pending(self, reason: str, now: float) -> list[Event]:
+        events = self.commands.fail_all(reason)
+        if self.upload is not None:
+            events += self.upload.fail(f"{reason} (during the upload)", now)
+        if self.readback is not None and self.readback.result is None:
+            self.readback.result = ReadbackResult(self.readback.mission_id, None, reason)
+            events.append(self.readback.result)
+        return events
 
     def connection_lost(self, reason: str, now: float) -> list[Event]:
         """The transport closed (port gone): the link is down at once."""
-        events = self.monitor.lost(reason)
-        events += self.commands.fail_all(f"link lost: {reason}")
-        if self.upload is not None:
-            events += self.upload.fail(f"link lost during upload: {reason}", now)
-        return events
+        return self.monitor.lost(reason) + self._fail_pending(f"link lost: {reason}", now)
 
     # ---- requests
-    def start_upload(self, mission: Mission, now: float) -> None:
-        """Begin uploading; raises RuntimeError if the link is down or an upload runs."""
-        self._require_link()
-        if self.upload is not None and not self.upload.done:
-            raise RuntimeError(f"mission {self.upload.mission.mission_id} is still uploading")
-        self.upload = MissionUploader(mission, self.config, now)
-        self._queue(self.upload.start(now))
-
-    def send_command(self, command: m.CommandCode, now: float, mission_id: int = 0) -> int:
-        self._require_link()
-        cid, msg = self.commands.send(command, now, mission_id)
-        self._queue([msg])
-        return cid
-
-    def send_guidance(self, heading_cdeg: int, speed_cms: int, valid_ms: int) -> None:
-        self._require_link()
-        self._queue([m.GuidanceSetpoint(heading_cdeg % 36000, speed_cms, valid_ms)])
-
     def _require_link(self) -> None:
-        if self.monitor.mismatch is not None:
-            raise RuntimeError(self.monitor.mismatch.message)
         if not self.monitor.link_up:
             raise RuntimeError("the boat link is down")
 
+    def start_upload(self, mission: Mission, now: float, swap_at_ms: int = 0) -> None:
+        """Begin uploading (swap_at_ms: hot swap at that boat uptime); RuntimeError if the
+        link is down or another upload runs."""
+        self._require_link()
+        if self.upload is not None and not self.upload.done:
+            raise RuntimeError(f"mission {self.upload.mission.mission_id} is still uploading")
+        self.upload = MissionUploader(mission, self.config, self.rtt, now, swap_at_ms)
+        self._queue_upload(self.upload.start(now), now)
+
+    def start_readback(self, mission_id: int, count: int, now: float) -> None:
+        self._require_link()
+        if self.readback is not None and self.readback.result is None:
+            raise RuntimeError(f"mission {self.readback.mission_id} is being read back")
+        self.readback = Readback(mission_id, count, self.config, self.rtt)
+        self._queue_reads(self.readback.start(now), now)
+
+    def send_command(self, name: str, now: float, mission_id: int = 0,
+                     mission_crc: int = 0) -> int:
+        self._require_link()
+        seq = self.commands.send(name, now, wire.to_i32(mission_id), wire.to_i32(mission_crc))
+        self._send_command(seq, now)
+        return seq
+
+    def send_guidance(self, heading_cdeg: int, speed_cms: int, valid_ms: int) -> None:
+        self._require_link()
+        self._send(self.codec.mav.usv_guidance_encode(
+            self.config.boat_id, wire.BOAT_COMPONENT, heading_cdeg % 36000,
+            max(0, min(0xFFFF, speed_cms)), max(1, min(0xFFFF, valid_ms))), self.now)
+
     # ---- output
-    def _queue(self, msgs: list[Any]) -> None:
-        for msg in msgs:
-            self._out += self.encoder.encode(msg)
-            if self.on_send is not None:
-                self.on_send(msg)
+    def _send(self, msg: Any, now: float) -> float:
+        """Queue one frame; returns when it will have left at the configured baud."""
+        data = self.codec.encode(msg, self._stamp(now))
+        self._out += data
+        self.tx_free_at = max(self.tx_free_at, now) + self.config.airtime(len(data))
+        return self.tx_free_at
+
+    def _send_command(self, seq: int, now: float) -> None:
+        p = self.commands.pending[seq]
+        departure = self._send(self.codec.mav.command_int_encode(
+            self.config.boat_id, wire.BOAT_COMPONENT, mav.MAV_FRAME_MISSION, p.code, 0, 0,
+            float(seq), float(self.session), 0.0, 0.0, p.x, p.y, 0.0), now)
+        p.deadline = departure + self.rtt.timeout
+
+    def _queue_upload(self, out: list[tuple[str, Any]], now: float) -> None:
+        up = self.upload
+        if up is None:
+            return
+        m, b = up.mission, self.config.boat_id
+        enc = self.codec.mav
+        for kind, key in out:
+            if kind == "begin":
+                msg = enc.usv_mission_begin_encode(b, wire.BOAT_COMPONENT, m.mission_id, m.crc,
+                                                   m.count, up.swap_at_ms)
+            elif kind == "end":
+                msg = enc.usv_mission_end_encode(b, wire.BOAT_COMPONENT, m.mission_id, m.crc,
+                                                 m.count)
+            else:
+                it = m.items[key]
+                msg = enc.usv_mission_item_encode(b, wire.BOAT_COMPONENT, it.mission_id, it.seq,
+                                                  it.lat, it.lon, it.t_ms, it.speed_cms,
+                                                  it.course_cdeg, it.heading_cdeg)
+            up.mark({"begin": BEGIN, "end": END}.get(kind, key), self._send(msg, now))
+
+    def _queue_reads(self, seqs: list[int], now: float) -> None:
+        rb = self.readback
+        for seq in seqs:
+            rb.mark(seq, self._send(self.codec.mav.usv_mission_read_encode(
+                self.config.boat_id, wire.BOAT_COMPONENT, rb.mission_id, seq), now))
 
     def data_to_send(self) -> bytes:
         data = bytes(self._out)
@@ -515,7 +871,9 @@ class StationProtocol:
         return data
 
     def next_deadline(self) -> float:
-        d = min(self.monitor.next_deadline(), self.commands.next_deadline())
+        d = min(self.monitor.next_deadline(), self.commands.next_deadline(), self.next_timesync)
         if self.upload is not None and not self.upload.done:
             d = min(d, self.upload.next_deadline())
+        if self.readback is not None and self.readback.result is None:
+            d = min(d, self.readback.next_deadline())
         return d

@@ -3,12 +3,13 @@
     async with BoatLink("/dev/ttyUSB0", baud=57600) as link:
         await link.wait_link_up(5)
         result = await link.upload_mission(mission, progress_cb=print)
-        ack = await link.command("start", mission_id=mission.mission_id)
-        async for event in link.events():   # TelemetryReceived, LinkUp, LinkDown, ...
+        outcome = await link.command("start", mission_id=mission.mission_id,
+                                     mission_crc=mission.crc)
+        async for event in link.events():   # TelemetryReceived, BoatReport, LinkDown, ...
             ...
 
 It reconnects on its own: when the port closes or cannot be opened it retries every
-`reconnect_s`, and the link comes up again with the next matching boat HEARTBEAT.
+`reconnect_s`, and the link comes up again with the paired boat's next HEARTBEAT.
 """
 
 from __future__ import annotations
@@ -19,15 +20,16 @@ import time
 from collections.abc import AsyncIterator, Awaitable, Callable
 from typing import Any
 
-from usvstation.link import messages as m
 from usvstation.link.mission import Mission
 from usvstation.link.protocol import (
     CommandOutcome,
-    DefinitionMismatch,
     LinkConfig,
     LinkDown,
     LinkUp,
+    MissionState,
+    ReadbackResult,
     StationProtocol,
+    Telemetry,
     TelemetryReceived,
     UploadProgress,
     UploadResult,
@@ -38,7 +40,7 @@ StreamFactory = Callable[[], Awaitable[ByteStream]]
 
 
 class LinkError(RuntimeError):
-    """The request cannot be sent: link down, definition mismatch or upload in progress."""
+    """The request cannot be sent: link down or an upload/readback in progress."""
 
 
 class BoatLink:
@@ -46,12 +48,14 @@ class BoatLink:
 
     def __init__(self, url: str | None = None, *, baud: int = 57600,
                  stream_factory: StreamFactory | None = None,
-                 config: LinkConfig | None = None, reconnect_s: float = 1.0) -> None:
+                 config: LinkConfig | None = None, reconnect_s: float = 1.0,
+                 key: bytes | None = None, session: int | None = None) -> None:
         if url is None and stream_factory is None:
             raise ValueError("BoatLink needs a url or a stream_factory")
         self.url = url
         self._factory = stream_factory or (lambda: open_stream(url, baud))
-        self.protocol = StationProtocol(config or LinkConfig(), self._now())
+        self.protocol = StationProtocol(config or LinkConfig(baud=baud), self._now(), key=key,
+                                        unix_time=time.time(), session=session)
         self.reconnect_s = reconnect_s
         self.stream: ByteStream | None = None
         self._task: asyncio.Task | None = None
@@ -60,6 +64,7 @@ class BoatLink:
         self._callbacks: list[Callable[[Any], None]] = []
         self._uploads: dict[int, tuple[asyncio.Future, Callable | None]] = {}
         self._commands: dict[int, asyncio.Future] = {}
+        self._readbacks: dict[int, asyncio.Future] = {}
         self._link_event = asyncio.Event()
         self.last_error = ""
 
@@ -97,27 +102,28 @@ class BoatLink:
         return self.protocol.link_up
 
     @property
-    def boat_state(self) -> m.Heartbeat | None:
-        return self.protocol.boat_heartbeat
+    def report(self) -> MissionState | None:
+        """The boat's last USV_MISSION_STATE."""
+        return self.protocol.report
 
     @property
-    def telemetry(self) -> m.Telemetry | None:
+    def telemetry(self) -> Telemetry | None:
         return self.protocol.telemetry
 
     @property
-    def mismatch(self) -> DefinitionMismatch | None:
-        return self.protocol.mismatch
+    def signed(self) -> bool:
+        return self.protocol.codec.signed
 
     async def wait_link_up(self, timeout: float | None = None) -> bool:
-        """True once the link is up; False after `timeout` seconds (or on a mismatch)."""
+        """True once the link is up; False after `timeout` seconds."""
         with contextlib.suppress(TimeoutError):
             await asyncio.wait_for(self._link_event.wait(), timeout)
         return self.link_up
 
     # ---- events
     def events(self, maxsize: int = 1000) -> AsyncIterator[Any]:
-        """Every event (TelemetryReceived, LinkUp, LinkDown, DefinitionMismatch,
-        StatusTextReceived, BoatHeartbeat, UploadProgress, UploadResult, CommandOutcome).
+        """Every event (TelemetryReceived, BoatReport, BoatRebooted, LinkUp, LinkDown,
+        StatusTextReceived, UploadProgress, UploadResult, ReadbackResult, CommandOutcome).
         A slow consumer loses its oldest events, never blocks the link."""
         queue: asyncio.Queue = asyncio.Queue(maxsize)
         self._subscribers.append(queue)
@@ -131,7 +137,7 @@ class BoatLink:
 
         return gen()
 
-    async def telemetry_stream(self) -> AsyncIterator[m.Telemetry]:
+    async def telemetry_stream(self) -> AsyncIterator[Telemetry]:
         async for ev in self.events():
             if isinstance(ev, TelemetryReceived):
                 yield ev.telemetry
@@ -144,11 +150,9 @@ class BoatLink:
         for ev in events:
             if isinstance(ev, LinkUp):
                 self._link_event.set()
-            elif isinstance(ev, LinkDown | DefinitionMismatch):
+            elif isinstance(ev, LinkDown):
                 self._link_event.clear()
-            if isinstance(ev, DefinitionMismatch):
-                self.last_error = ev.message
-            elif isinstance(ev, UploadProgress | UploadResult):
+            if isinstance(ev, UploadProgress | UploadResult):
                 fut, cb = self._uploads.get(ev.mission_id, (None, None))
                 if cb is not None and isinstance(ev, UploadProgress):
                     cb(ev)
@@ -157,7 +161,11 @@ class BoatLink:
                     if not fut.done():
                         fut.set_result(ev)
             elif isinstance(ev, CommandOutcome):
-                fut = self._commands.pop(ev.command_id, None)
+                fut = self._commands.pop(ev.seq, None)
+                if fut is not None and not fut.done():
+                    fut.set_result(ev)
+            elif isinstance(ev, ReadbackResult):
+                fut = self._readbacks.pop(ev.mission_id, None)
                 if fut is not None and not fut.done():
                     fut.set_result(ev)
             for cb in self._callbacks:
@@ -169,38 +177,52 @@ class BoatLink:
 
     # ---- requests
     async def upload_mission(self, mission: Mission,
-                             progress_cb: Callable[[UploadProgress], None] | None = None
-                             ) -> UploadResult:
-        """Upload and activate a mission; returns when the boat acknowledged its END
-        (ok=True: the boat runs exactly this mission on START) or the upload failed
-        (ok=False with the reason; the boat never activates a partial mission)."""
+                             progress_cb: Callable[[UploadProgress], None] | None = None,
+                             swap_at_ms: int = 0) -> UploadResult:
+        """Upload a mission; returns when the boat acknowledged END (ok=True: activated, or
+        the hot swap at boat uptime `swap_at_ms` scheduled) or the upload failed (ok=False
+        with the reason; the boat never activates a partial mission)."""
         fut = asyncio.get_running_loop().create_future()
         try:
-            self.protocol.start_upload(mission, self._now())
+            self.protocol.start_upload(mission, self._now(), swap_at_ms)
         except RuntimeError as exc:
             raise LinkError(str(exc)) from None
         self._uploads[mission.mission_id] = (fut, progress_cb)
         await self._flush()
         return await fut
 
-    async def command(self, name: str | m.CommandCode, mission_id: int = 0) -> CommandOutcome:
-        """Send START/HOLD/RESUME/ABORT; returns the boat's answer or a timeout outcome."""
-        code = m.CommandCode[name.upper()] if isinstance(name, str) else m.CommandCode(name)
+    async def read_mission(self, mission_id: int, count: int) -> ReadbackResult:
+        """Read the boat's copy of a mission back, item by item."""
         fut = asyncio.get_running_loop().create_future()
         try:
-            cid = self.protocol.send_command(code, self._now(), mission_id)
+            self.protocol.start_readback(mission_id, count, self._now())
         except RuntimeError as exc:
             raise LinkError(str(exc)) from None
-        self._commands[cid] = fut
+        self._readbacks[mission_id] = fut
         await self._flush()
         return await fut
+
+    async def command(self, name: str, mission_id: int = 0, mission_crc: int = 0
+                      ) -> CommandOutcome:
+        """Send start/hold/resume/abort; returns the boat's answer or, after the bounded
+        retries, an outcome with result None (never waits for ever)."""
+        fut = asyncio.get_running_loop().create_future()
+        try:
+            seq = self.protocol.send_command(name.lower(), self._now(), mission_id, mission_crc)
+        except RuntimeError as exc:
+            raise LinkError(str(exc)) from None
+        self._commands[seq] = fut
+        await self._flush()
+        return await fut
+
+    def boat_uptime_ms(self) -> int | None:
+        return self.protocol.boat_uptime_ms(self._now())
 
     async def guide(self, heading_deg: float, speed: float, valid_s: float) -> None:
         """Shore-assisted setpoint: compass heading (deg), speed (m/s), for valid_s seconds."""
         try:
-            self.protocol.send_guidance(round(heading_deg * 100) % 36000,
-                                        max(0, min(0xFFFF, round(speed * 100))),
-                                        max(1, min(0xFFFF, round(valid_s * 1000))))
+            self.protocol.send_guidance(round(heading_deg * 100) % 36000, round(speed * 100),
+                                        round(valid_s * 1000))
         except RuntimeError as exc:
             raise LinkError(str(exc)) from None
         await self._flush()

@@ -15,6 +15,8 @@ from typing import Protocol
 
 import numpy as np
 
+from usvstation.link.wire import split_frames
+
 
 class ByteStream(Protocol):
     async def read(self) -> bytes: ...
@@ -153,9 +155,9 @@ class FdStream:
 
 
 class FaultInjectingStream:
-    """Wraps a ByteStream's writes like a radio link: drops whole frames with probability
-    `loss`, flips each bit with probability `ber`, and paces the bytes at `baud` (10 bits a
-    byte, as 8N1) through a transmit queue, so bandwidth and queueing are real.
+    """Wraps a ByteStream's writes like a radio link: drops whole MAVLink 2 frames with
+    probability `loss`, flips each bit with probability `ber`, and paces the bytes at `baud`
+    (10 bits a byte, as 8N1) through a transmit queue, so bandwidth and queueing are real.
 
     `enabled = False` is the radio switched off: everything written is lost. Counters:
     frames_sent, frames_dropped, bits_flipped, bytes_on_wire."""
@@ -180,14 +182,12 @@ class FaultInjectingStream:
         if not self.enabled:
             return
         out = bytearray()
-        for frame in data.split(b"\x00"):
-            if not frame:
-                continue
+        for frame in split_frames(data):
             if self.loss and self.rng.random() < self.loss:
                 self.frames_dropped += 1
                 continue
             self.frames_sent += 1
-            out += b"\x00" + frame + b"\x00"
+            out += frame
         if self.ber and out:
             flips = self.rng.binomial(len(out) * 8, self.ber)
             for pos in self.rng.integers(0, len(out) * 8, flips):

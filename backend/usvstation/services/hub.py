@@ -10,10 +10,13 @@ from __future__ import annotations
 
 import asyncio
 import json
+import logging
 from collections import deque
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
+log = logging.getLogger(__name__)
 QUEUE_SIZE = 256
 MAX_OVERFLOWS = 2000  # consecutive drops before a client is cut off
 
@@ -45,6 +48,8 @@ class LiveHub:
         self.queue_size = queue_size
         self.subscribers: set[Subscriber] = set()
         self.published = 0
+        # in-process observers (kind, data), called synchronously; their faults are contained
+        self.observers: list[Callable[[str, dict[str, Any]], None]] = []
 
     def subscribe(self) -> Subscriber:
         sub = Subscriber()
@@ -62,6 +67,11 @@ class LiveHub:
         self.published += 1
         for sub in list(self.subscribers):
             self._offer(sub, kind, text)
+        for observer in list(self.observers):
+            try:
+                observer(kind, data)
+            except Exception:
+                log.exception("live hub observer failed on a %s event", kind)
 
     def _offer(self, sub: Subscriber, kind: str, text: str) -> None:
         if len(sub.outbox) >= self.queue_size:

@@ -93,6 +93,15 @@ def die_with_parent(station_pid: int) -> None:
     threading.Thread(target=watch, name="station-watchdog", daemon=True).start()
 
 
+def outdated_by(planned: dict[str, Any], working: Scenario) -> list[str]:
+    """The top-level fields in which the working scenario differs from the one a plan was
+    made for, when the plan was made for the working scenario (same name); else []."""
+    now = working.model_dump(mode="json")
+    if planned.get("name") != now["name"]:
+        return []
+    return sorted(k for k in planned.keys() | now.keys() if planned.get(k) != now.get(k))
+
+
 def init_worker(memory_mb: int | None = None) -> None:
     """Plan workers: tuned allocator, a memory limit, and the CPU only when the server idles.
 

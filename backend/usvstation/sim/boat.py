@@ -1,40 +1,62 @@
-"""The boat side of usv-link as a sans-IO state machine (protocol/README.md "Boat").
+"""The boat side of usv-link 2 as a sans-IO state machine (protocol/README.md "Boat").
 
-`BoatProtocol` is what the STM32 firmware does, in Python: it stages missions and
-activates them atomically after a verified MISSION_END, executes commands once per
-command_id, sends HEARTBEAT and TELEMETRY, and holds station (failsafe) when the
-station link is lost. It drives any `Vehicle` (sim/vehicle.py). Time comes in as
-`now` (link clock, seconds); the boat clock runs `sim_speed` times faster.
+`BoatProtocol` is what the firmware does (protocol/c/boat/ is the same in C): it obeys
+only its paired station's signed frames addressed to it, refreshes its link-loss timer
+only on those, keeps a duplicate memory per (session, seq, command) that a new station
+session clears and that expires after 5 s (HOLD and ABORT always execute), stages
+missions and activates them atomically after END (count, ranges, CRC-32), swaps a
+running mission at a boat-clock instant, fails safe 3 s after its station went silent,
+and reports what it holds (USV_MISSION_STATE) after every HEARTBEAT and on every change.
+
+It drives any `Vehicle` (sim/vehicle.py) through set_mission/start/hold/resume/abort/
+set_guidance/clear_guidance/step/state only. Time comes in as `now` (link clock, s);
+the boat clock (uptime) runs `sim_speed` times faster.
 """
 
 from __future__ import annotations
 
 import math
-from collections import OrderedDict
-from dataclasses import dataclass
+import random
+from collections import Counter, deque
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
 from usvstation.geo import RampFrame
-from usvstation.link import messages as m
-from usvstation.link.codec import Encoder, FrameDecoder, mission_crc32
-from usvstation.link.mission import item_problem
-from usvstation.link.protocol import heartbeat_matches, mismatch_message
+from usvstation.link import wire
+from usvstation.link.mavlink import usv_recovery as mav
+from usvstation.link.mission import (
+    MIN_ITEMS,
+    MissionItem,
+    distance_m,
+    item_problem,
+    sequence_problem,
+)
 from usvstation.sim.sensors import Battery, GpsNoise
 from usvstation.sim.vehicle import Vehicle, Waypoint
 
-NAK = m.NakReason
-STAGE = m.MissionStage
+S_IDLE, S_READY, S_RUNNING, S_HOLD, S_DONE, S_ABORTED, S_FAILSAFE = range(7)
+ST_NONE, ST_RECEIVING, ST_VERIFIED = range(3)
+R = mav  # result and reason constants live in the generated module
+STAGE_BEGIN, STAGE_ITEM, STAGE_END, STAGE_READ = 1, 2, 3, 4
+PERSIST_PERIOD_S = 1.0  # the signing floor is written to non-volatile memory this often
 
 
 @dataclass(frozen=True)
 class BoatConfig:
-    telemetry_hz: float = 5.0  # 0 < hz <= 50, frames per second of boat time
-    failsafe_timeout_s: float = m.LINK_TIMEOUT_MS / 1000
-    heartbeat_period_s: float = m.HEARTBEAT_PERIOD_MS / 1000
+    boat_id: int = wire.BOAT_ID
+    station_id: int = wire.STATION_ID
+    telemetry_hz: float = 5.0  # 0 < hz <= 50, per second of boat time
+    failsafe_timeout_s: float = 3.0  # link time without a valid frame from the station
+    heartbeat_period_s: float = 1.0  # boat time
     sim_speed: float = 1.0  # boat seconds per link-clock second
     max_step_s: float = 0.05  # vehicle integration step, boat time
+    start_radius_m: float = 10.0  # START refused farther than this from waypoint 0
+    staging_timeout_s: float = 30.0  # staging dropped after this long without progress
+    duplicate_expiry_s: float = 5.0  # duplicate memory entry lifetime
+    baud: int | None = None  # UART model: telemetry only while the line is idle
+    link_id: int = 0
 
     def __post_init__(self) -> None:
         if not 0 < self.telemetry_hz <= 50:
@@ -43,394 +65,590 @@ class BoatConfig:
             raise ValueError("failsafe_timeout_s must be positive")
         if self.sim_speed <= 0:
             raise ValueError(f"sim_speed must be positive, got {self.sim_speed}")
+        if self.boat_id == self.station_id:
+            raise ValueError(f"boat_id and station_id are both {self.boat_id}")
+
+
+@dataclass
+class NonVolatile:
+    """What survives a reboot (flash on the STM32): the highest signing timestamp the
+    boat accepted from its station, written at most every PERSIST_PERIOD_S. After a boot
+    the boat accepts only station timestamps above it + 2 PERSIST_PERIOD_S, so nothing
+    recorded before the reboot can be replayed."""
+
+    sign_floor: int = 0
 
 
 @dataclass
 class _Staging:
-    begin: m.MissionBegin
-    items: dict[int, m.MissionItem]
+    mission_id: int
+    crc32: int
+    count: int
+    swap_at_ms: int
+    items: dict[int, MissionItem] = field(default_factory=dict)
+    state: int = ST_RECEIVING
+    touched: float = 0.0  # link time of the last progress
 
-    def same(self, b: m.MissionBegin) -> bool:
-        return self.begin == b
-
-
-class MissionStager:
-    """Stages one mission's items; verifies count, ranges, times and the CRC-32 at END.
-    Returns the answer (MISSION_ACK or MISSION_NAK) for each message; never touches
-    the active mission itself."""
-
-    def __init__(self) -> None:
-        self.staging: _Staging | None = None
-
-    def on_begin(self, b: m.MissionBegin) -> m.MissionAck | m.MissionNak:
-        if b.mission_id == 0:
-            return m.MissionNak(0, STAGE.BEGIN, 0, NAK.UNKNOWN_MISSION, 0)
-        if b.count == 0:
-            return m.MissionNak(b.mission_id, STAGE.BEGIN, 0, NAK.BAD_COUNT, 0)
-        if b.count > m.MAX_MISSION_ITEMS:
-            return m.MissionNak(b.mission_id, STAGE.BEGIN, 0, NAK.TOO_MANY_ITEMS, 0)
-        if self.staging is None or not self.staging.same(b):
-            self.staging = _Staging(b, {})  # a new mission: drop any other staging
-        return m.MissionAck(b.mission_id, STAGE.BEGIN, 0, len(self.staging.items))
-
-    def on_item(self, it: m.MissionItem) -> m.MissionAck | m.MissionNak:
-        st = self.staging
-        if st is None or st.begin.mission_id != it.mission_id:
-            return m.MissionNak(it.mission_id, STAGE.ITEM, it.index, NAK.UNKNOWN_MISSION, 0)
-        n = len(st.items)
-        if it.index >= st.begin.count:
-            return m.MissionNak(it.mission_id, STAGE.ITEM, it.index, NAK.BAD_INDEX, n)
-        if item_problem(it):
-            return m.MissionNak(it.mission_id, STAGE.ITEM, it.index, NAK.BAD_ITEM, n)
-        old = st.items.get(it.index)
-        if old is not None and old != it:
-            return m.MissionNak(it.mission_id, STAGE.ITEM, it.index, NAK.CONFLICT, n)
-        st.items[it.index] = it  # a duplicate of a staged item changes nothing
-        return m.MissionAck(it.mission_id, STAGE.ITEM, it.index, len(st.items))
-
-    def on_end(self, e: m.MissionEnd) -> tuple[m.MissionAck | m.MissionNak, list | None]:
-        """The answer, and the verified items (in order) when the mission may be activated."""
-        st = self.staging
-        if st is None or st.begin.mission_id != e.mission_id:
-            return m.MissionNak(e.mission_id, STAGE.END, 0, NAK.UNKNOWN_MISSION, 0), None
-        b, n = st.begin, len(st.items)
-        if e.count != b.count:
-            return m.MissionNak(e.mission_id, STAGE.END, 0, NAK.BAD_COUNT, n), None
-        if e.mission_crc != b.mission_crc:
-            self.staging = None
-            return m.MissionNak(e.mission_id, STAGE.END, 0, NAK.CRC_MISMATCH, n), None
-        missing = next((i for i in range(b.count) if i not in st.items), None)
-        if missing is not None:
-            return m.MissionNak(e.mission_id, STAGE.END, missing, NAK.MISSING_ITEMS, n), None
-        items = [st.items[i] for i in range(b.count)]
-        for i in range(1, len(items)):
-            if items[i].t_ms <= items[i - 1].t_ms:
-                self.staging = None
-                return m.MissionNak(e.mission_id, STAGE.END, i, NAK.BAD_ITEM, n), None
-        origin = (b.origin_lat_e7, b.origin_lon_e7, b.ramp_bearing_cdeg)
-        if mission_crc32(origin, items) != b.mission_crc:
-            self.staging = None
-            return m.MissionNak(e.mission_id, STAGE.END, 0, NAK.CRC_MISMATCH, n), None
-        self.staging = None
-        return m.MissionAck(e.mission_id, STAGE.END, 0, n), items
+    @property
+    def contiguous(self) -> int:
+        n = 0
+        while n in self.items:
+            n += 1
+        return n
 
 
 @dataclass(frozen=True)
 class ActiveMission:
-    begin: m.MissionBegin
-    items: tuple[m.MissionItem, ...]
-
-    @property
-    def mission_id(self) -> int:
-        return self.begin.mission_id
-
-
-MAX_CATCH_UP_S = 1.0  # link-clock seconds of missed TELEMETRY frames sent late, not skipped
+    mission_id: int
+    crc32: int
+    items: tuple[MissionItem, ...]
 
 
 class BoatProtocol:
     """The simulated boat's protocol engine: feed bytes and time in, take bytes out."""
 
     def __init__(self, vehicle: Vehicle, frame: RampFrame, config: BoatConfig | None = None,
-                 *, gps: GpsNoise | None = None, battery: Battery | None = None,
-                 now: float = 0.0) -> None:
-        self.vehicle = vehicle
-        self.frame = frame
-        self.cfg = config or BoatConfig()
-        self.gps = gps or GpsNoise()
-        self.battery = battery or Battery()
-        self.encoder = Encoder()
-        self.decoder = FrameDecoder()
-        self.stager = MissionStager()
+                 *, key: bytes | None = None, nv: NonVolatile | None = None,
+                 gps: GpsNoise | None = None, battery: Battery | None = None,
+                 now: float = 0.0, unix_time: float = wire.EPOCH_2015 + 3.0e8,
+                 boot_id: int | None = None) -> None:
+        self.vehicle, self.frame = vehicle, frame
+        self.cfg = cfg = config or BoatConfig()
+        self.gps, self.battery = gps or GpsNoise(), battery or Battery()
+        self.nv = nv if nv is not None else NonVolatile()
+        self.key = key
+        self.unix_time, self.started = unix_time, now
+        self.boot_id = boot_id if boot_id is not None else random.SystemRandom().getrandbits(32)
+        floor = self.nv.sign_floor + int(2 * PERSIST_PERIOD_S * wire.TICKS_PER_S) \
+            if self.nv.sign_floor else 0
+        self.codec = wire.Codec(cfg.boat_id, wire.BOAT_COMPONENT, key, link_id=cfg.link_id,
+                                timestamp=wire.signing_time(unix_time), stream_floor=floor,
+                                allow_unsigned=(mav.MAVLINK_MSG_ID_RADIO_STATUS,))
+        self.state = S_IDLE
         self.active: ActiveMission | None = None
-        self.state = m.State.IDLE
-        self.mode = m.Mode.STANDBY
-        self.failsafe = False
+        self.staging: _Staging | None = None
+        self.expired_id = 0
+        self.session = 0
+        self.memory: dict[tuple[int, int, int], tuple[Any, float]] = {}
         self.linked = False
-        self.mismatch: str | None = None
-        self.started = now
-        self.last_now = now
         self.last_rx = -math.inf
+        self.last_now = now
         self.boat_time = 0.0
-        self.next_telemetry = now
-        self.next_heartbeat = now
-        self.guidance_until = -math.inf
-        self.next_mismatch_text = now
-        self.recent_commands: OrderedDict[int, m.CommandAck] = OrderedDict()
-        self.log: list[str] = []  # status texts and events, for the runner to print
-        self._out = bytearray()
+        self.next_telemetry = 0.0
+        self.next_heartbeat = 0.0
+        self.next_persist = now
+        self.guided_until: float | None = None
+        self.rejected = 0
+        self.refusals: Counter[str] = Counter()
+        self.other_systems: Counter[int] = Counter()
+        self.echoes = 0
+        self.failsafes = 0
+        self.executed: list[tuple[float, str]] = []  # (uptime s, command) actually executed
+        self.activations: list[tuple[float, int]] = []  # (uptime s, mission id) flown from
+        self.telemetry_dropped = 0
+        self.log: list[str] = []  # status texts, for the runner to print
+        self._text_budget_at = -math.inf
+        self._swap_mission: ActiveMission | None = None
+        self._urgent = bytearray()
+        self._telemetry: deque[Any] = deque()  # messages, signed when they go out
+        self._line_free_at = now
 
     # ---- I/O boundary
+    @property
+    def uptime_ms(self) -> int:
+        return int(round(self.boat_time * 1000, 6)) & 0xFFFFFFFF
+
+    def _stamp(self, now: float) -> int:
+        return wire.signing_time(self.unix_time + now - self.started)
+
     def receive_data(self, data: bytes, now: float) -> None:
         self.update(now)
-        for msg in self.decoder.feed(data):
+        msgs, refused = self.codec.feed(data)
+        for r in refused:
+            self._refuse(r.reason, r.system_id, now)
+        for msg in msgs:
             self._handle(msg, now)
 
-    def data_to_send(self) -> bytes:
-        data = bytes(self._out)
-        self._out.clear()
-        return data
+    def data_to_send(self, now: float | None = None) -> bytes:
+        """ACKs, answers and status first, then telemetry; with `cfg.baud` telemetry goes
+        out only while the modelled UART is idle (it never delays an ACK by more than
+        one telemetry frame)."""
+        out = bytes(self._urgent)
+        self._urgent.clear()
+        baud = self.cfg.baud
+        t = self.last_now if now is None else now
+        if baud:
+            self._line_free_at = max(self._line_free_at, t) + len(out) * 10 / baud
+        while self._telemetry and (not baud or self._line_free_at <= t):
+            # signed now, not when queued: signing timestamps must rise in sending order
+            frame = self.codec.encode(self._telemetry.popleft(), self._stamp(t))
+            out += frame
+            if baud:
+                self._line_free_at = max(self._line_free_at, t) + len(frame) * 10 / baud
+        return out
 
-    def _send(self, msg: Any) -> None:
-        self._out += self.encoder.encode(msg)
+    def _send(self, msg: Any, now: float, *, telemetry: bool = False) -> None:
+        if telemetry:
+            self._telemetry.append(msg)
+            while len(self._telemetry) > 16:
+                self._telemetry.popleft()
+                self.telemetry_dropped += 1
+        else:
+            self._urgent += self.codec.encode(msg, self._stamp(now))
 
-    def _text(self, severity: m.Severity, text: str) -> None:
-        self.log.append(f"{severity.name}: {text}")
-        self._send(m.StatusText(severity, text))
+    def _text(self, severity: int, text: str, now: float) -> None:
+        self.log.append(text)
+        self._send(self.codec.mav.statustext_encode(severity, text[:50].encode()), now)
 
-    @property
-    def flags(self) -> int:
-        f = m.Flag(0)
-        if self.failsafe:
-            f |= m.Flag.FAILSAFE
-        if self.stager.staging is not None:
-            f |= m.Flag.STAGING
-        if not self.linked:
-            f |= m.Flag.LINK_LOST
-        return int(f)
+    def _refuse(self, reason: str, src: int, now: float) -> None:
+        self.rejected = min(0xFFFF, self.rejected + 1)
+        self.refusals[reason] += 1
+        if now - self._text_budget_at >= 1.0:  # at most one report a second
+            self._text_budget_at = now
+            self._text(mav.MAV_SEVERITY_WARNING,
+                       f"refused {reason} frame from {src} ({self.rejected} total)", now)
 
-    def heartbeat(self, now: float) -> m.Heartbeat:
-        return m.Heartbeat(m.DEFINITION_CRC, m.PROTOCOL_VERSION, m.Sender.BOAT, self.mode,
-                           self.state, self.flags, self.active.mission_id if self.active else 0,
-                           int((now - self.started) * 1000) & 0xFFFFFFFF)
+    # ---- reports
+    def _heartbeat(self, now: float) -> None:
+        e = self.codec.mav
+        status = mav.MAV_STATE_CRITICAL if self.state == S_FAILSAFE else \
+            mav.MAV_STATE_ACTIVE if self.state in (S_RUNNING, S_HOLD) else mav.MAV_STATE_STANDBY
+        base = mav.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED | (
+            mav.MAV_MODE_FLAG_AUTO_ENABLED if self.state == S_RUNNING else 0)
+        self._send(e.heartbeat_encode(mav.MAV_TYPE_SURFACE_BOAT, mav.MAV_AUTOPILOT_GENERIC,
+                                      base, self.state, status), now)
+        self._send(e.sys_status_encode(0, 0, 0, 0, round(self.battery.voltage * 1000), -1, -1,
+                                       0, self.rejected, 0, 0, 0, 0), now)
+        self._report(now)
 
-    def _report_state(self, now: float) -> None:
-        self._send(self.heartbeat(now))
-        self.next_heartbeat = now + self.cfg.heartbeat_period_s
+    def _report(self, now: float) -> None:
+        a, s = self.active, self.staging
+        self._send(self.codec.mav.usv_mission_state_encode(
+            self.uptime_ms, self.boot_id, self.state,
+            a.mission_id if a else 0, a.crc32 if a else 0, len(a.items) if a else 0,
+            min(self.vehicle.state.waypoint_index, 0xFFFF),
+            s.state if s else ST_NONE, s.mission_id if s else 0, s.crc32 if s else 0,
+            s.contiguous if s else 0, s.count if s else 0,
+            s.swap_at_ms if s and s.state == ST_VERIFIED else 0,
+            self.session, self.rejected), now)
 
     # ---- messages
     def _handle(self, msg: Any, now: float) -> None:
-        if isinstance(msg, m.Heartbeat):
-            self._on_heartbeat(msg, now)
+        kind = msg.get_type()
+        src = msg.get_srcSystem()
+        if src == self.cfg.boat_id:
+            self.echoes += 1  # our own frames heard back: never a station
             return
-        if not self.linked:
-            return  # no handshake (or a mismatched one): nothing is acted on
-        self.last_rx = now
-        if isinstance(msg, m.Command):
-            self._on_command(msg, now)
-        elif isinstance(msg, m.MissionBegin):
-            if self.state == m.State.RUNNING:
-                self._send(m.MissionNak(msg.mission_id, STAGE.BEGIN, 0, NAK.BUSY, 0))
-            else:
-                self._send(self.stager.on_begin(msg))
-        elif isinstance(msg, m.MissionItem):
-            self._send(self._late_duplicate(msg) or self.stager.on_item(msg))
-        elif isinstance(msg, m.MissionEnd):
-            self._on_end(msg, now)
-        elif isinstance(msg, m.GuidanceSetpoint):
-            self._on_guidance(msg, now)
-
-    def _on_heartbeat(self, hb: m.Heartbeat, now: float) -> None:
-        if hb.sender == m.Sender.BOAT and heartbeat_matches(hb):
-            return  # our own heartbeat echoed back: not a station
-        if not heartbeat_matches(hb):
-            self.mismatch = mismatch_message("station", hb, me="boat")
-            short = (f"mismatch station v{hb.protocol_version} 0x{hb.definition_crc:08X} "
-                     f"boat v{m.PROTOCOL_VERSION} 0x{m.DEFINITION_CRC:08X}")
-            if self.linked:
-                self._link_lost(now, "definition mismatch")
-            if now >= self.next_mismatch_text:
-                self.log.append(self.mismatch)
-                self._text(m.Severity.ERROR, short)
-                self.next_mismatch_text = now + 5.0
+        addressed = kind in _COMMANDING
+        if src != self.cfg.station_id:
+            if kind != "RADIO_STATUS":
+                self.other_systems[src] += 1
+            if addressed:
+                self._refuse("wrong sender", src, now)
             return
-        self.mismatch = None
+        if kind == "RADIO_STATUS":
+            return  # unsigned radio report: never refreshes the link timer
+        target = getattr(msg, "target_system", self.cfg.boat_id)
+        if target != self.cfg.boat_id:
+            return  # for another boat
         self.last_rx = now
+        if self.key is not None:
+            ts = max((t for (_, sysid, _), t in self.codec.streams.items()
+                      if sysid == self.cfg.station_id), default=0)
+            if now >= self.next_persist and ts > self.nv.sign_floor:
+                self.nv.sign_floor = ts
+                self.next_persist = now + PERSIST_PERIOD_S
         if not self.linked:
             self.linked = True
-            self._report_state(now)  # answer at once: completes the station's handshake
-            if self.failsafe:
-                self._text(m.Severity.WARNING, "link restored; holding: RESUME to continue")
-            else:
-                self._text(m.Severity.INFO, "link up")
+            self._text(mav.MAV_SEVERITY_INFO, "link up" if self.state != S_FAILSAFE
+                       else "link back; failsafe hold: RESUME or ABORT", now)
+        handler = _FROM_STATION.get(kind)
+        if handler is not None:
+            handler(self, msg, now)
 
-    def _late_duplicate(self, it: m.MissionItem) -> m.MissionAck | None:
-        """An item of the already active mission (its ACK was lost): acknowledge again."""
-        a = self.active
-        if (self.stager.staging is None and a is not None and it.mission_id == a.mission_id
-                and it.index < len(a.items) and a.items[it.index] == it):
-            return m.MissionAck(it.mission_id, STAGE.ITEM, it.index, len(a.items))
+    def _on_timesync(self, msg: Any, now: float) -> None:
+        if msg.tc1 == 0:
+            self._send(self.codec.mav.timesync_encode(int(self.boat_time * 1e9) or 1, msg.ts1),
+                       now)
+
+    def _on_command(self, c: Any, now: float) -> None:
+        seq, session, code = int(c.param1), int(c.param2), c.command
+        if session != self.session:  # a new station session: forget the old one's commands
+            self.session = session
+            self.memory.clear()
+        self.memory = {k: v for k, v in self.memory.items()
+                       if now - v[1] < self.cfg.duplicate_expiry_s}
+        key = (session, seq, code)
+        name = wire.COMMAND_NAMES.get(code)
+        if key in self.memory and name not in ("hold", "abort"):
+            self._send(self.memory[key][0], now)  # a retry: the same answer, not executed
+            return
+        result, reason = self._execute(name, c, now)
+        ack = self.codec.mav.command_ack_encode(code, result, reason, seq, self.cfg.station_id,
+                                                wire.STATION_COMPONENT)
+        self.memory[key] = (ack, now)
+        self._send(ack, now)
+        self._report(now)
+
+    def _on_command_long(self, c: Any, now: float) -> None:
+        """usv-link commands are COMMAND_INT only: anything else is unsupported."""
+        self._send(self.codec.mav.command_ack_encode(
+            c.command, R.MAV_RESULT_UNSUPPORTED, R.USV_COMMAND_REASON_UNKNOWN_COMMAND, 0,
+            self.cfg.station_id, wire.STATION_COMPONENT), now)
+
+    def _execute(self, name: str | None, c: Any, now: float) -> tuple[int, int]:
+        denied = R.MAV_RESULT_DENIED
+        if name is None:
+            return R.MAV_RESULT_UNSUPPORTED, R.USV_COMMAND_REASON_UNKNOWN_COMMAND
+        st = self.state
+        if name == "start":
+            a = self.active
+            if a is None:
+                return denied, R.USV_COMMAND_REASON_NO_MISSION
+            if (wire.to_u32(c.x), wire.to_u32(c.y)) != (a.mission_id, a.crc32):
+                self._text(mav.MAV_SEVERITY_WARNING,
+                           f"START refused: holds mission {a.mission_id}", now)
+                return denied, R.USV_COMMAND_REASON_MISSION_MISMATCH
+            if st != S_READY:
+                return denied, R.USV_COMMAND_REASON_WRONG_STATE
+            dist = self._distance_to(a.items[0])
+            if dist > self.cfg.start_radius_m:
+                self._text(mav.MAV_SEVERITY_WARNING, f"START refused: {dist:.1f} m from "
+                           f"waypoint 0 (limit {self.cfg.start_radius_m:g} m)", now)
+                return denied, R.USV_COMMAND_REASON_TOO_FAR
+            self.vehicle.start()
+            self.state = S_RUNNING
+            self.activations.append((self.boat_time, a.mission_id))
+        elif name == "hold":  # always acts: whatever moves stops and keeps station
+            if st in (S_RUNNING, S_FAILSAFE, S_HOLD):
+                self.vehicle.hold()
+                self._clear_guidance()
+                self.state = S_HOLD
+        elif name == "resume":
+            if st == S_RUNNING:
+                return R.MAV_RESULT_ACCEPTED, R.USV_COMMAND_REASON_NONE
+            if st not in (S_HOLD, S_FAILSAFE):
+                return denied, R.USV_COMMAND_REASON_WRONG_STATE
+            self.vehicle.resume()
+            self.state = S_RUNNING
+        elif name == "abort":  # always acts: thrusters stop, missions and staging dropped
+            self.vehicle.abort()
+            self._clear_guidance()
+            self.active, self.staging = None, None
+            self.state = S_ABORTED
+        self.executed.append((self.boat_time, name))
+        return R.MAV_RESULT_ACCEPTED, R.USV_COMMAND_REASON_NONE
+
+    def _distance_to(self, it: MissionItem) -> float:
+        s = self.vehicle.state
+        lat, lon = self.frame.to_geodetic(s.x, s.y)
+        return distance_m(round(float(lat) * 1e7), round(float(lon) * 1e7), it.lat, it.lon)
+
+    def _mission_ack(self, mission_id: int, seq: int, result: int, stage: int,
+                     now: float) -> None:
+        self._send(self.codec.mav.usv_mission_ack_encode(
+            self.cfg.station_id, wire.STATION_COMPONENT, mission_id, seq, result, stage), now)
+
+    def _on_begin(self, b: Any, now: float) -> None:
+        mid = b.mission_id
+        st = self.staging
+        if mid == 0:
+            return self._mission_ack(mid, 0, R.USV_MISSION_UNKNOWN_MISSION, STAGE_BEGIN, now)
+        if not MIN_ITEMS <= b.count <= wire.MAX_MISSION_ITEMS:
+            self._text(mav.MAV_SEVERITY_WARNING, f"mission {mid}: count {b.count} outside "
+                       f"{MIN_ITEMS}..{wire.MAX_MISSION_ITEMS}", now)
+            return self._mission_ack(mid, 0, R.USV_MISSION_BAD_COUNT, STAGE_BEGIN, now)
+        running = self.state in (S_RUNNING, S_HOLD, S_FAILSAFE)
+        if (b.swap_at_ms == 0 and running) or (b.swap_at_ms and self.state != S_RUNNING):
+            return self._mission_ack(mid, 0, R.USV_MISSION_DENIED, STAGE_BEGIN, now)
+        if st is not None and (st.mission_id, st.crc32, st.count, st.swap_at_ms) == \
+                (mid, b.crc32, b.count, b.swap_at_ms):
+            st.touched = now  # a retry of BEGIN: keep what is staged
+        elif st is not None and st.state == ST_VERIFIED:
+            return self._mission_ack(mid, 0, R.USV_MISSION_BUSY, STAGE_BEGIN, now)
+        else:
+            self.staging = st = _Staging(mid, b.crc32, b.count, b.swap_at_ms, touched=now)
+        self._mission_ack(mid, st.contiguous, R.USV_MISSION_ACCEPTED, STAGE_BEGIN, now)
+        self._report(now)
+
+    def _on_item(self, m: Any, now: float) -> None:
+        st, a = self.staging, self.active
+        it = MissionItem.from_msg(m)
+        if st is None or st.mission_id != it.mission_id:
+            if a is not None and a.mission_id == it.mission_id and it.seq < len(a.items) \
+                    and a.items[it.seq] == it:  # a late retry of the active mission's item
+                return self._mission_ack(it.mission_id, len(a.items), R.USV_MISSION_ACCEPTED,
+                                         STAGE_ITEM, now)
+            result = R.USV_MISSION_EXPIRED if it.mission_id == self.expired_id \
+                else R.USV_MISSION_UNKNOWN_MISSION
+            return self._mission_ack(it.mission_id, 0, result, STAGE_ITEM, now)
+        if st.state == ST_VERIFIED:
+            return self._mission_ack(it.mission_id, st.count, R.USV_MISSION_ACCEPTED,
+                                     STAGE_ITEM, now)
+        if it.seq >= st.count:
+            return self._mission_ack(it.mission_id, st.contiguous, R.USV_MISSION_BAD_SEQ,
+                                     STAGE_ITEM, now)
+        problem = item_problem(it)
+        if problem:
+            self._text(mav.MAV_SEVERITY_WARNING, f"item {it.seq}: {problem}", now)
+            return self._mission_ack(it.mission_id, it.seq, R.USV_MISSION_OUT_OF_RANGE,
+                                     STAGE_ITEM, now)
+        st.items[it.seq] = it
+        st.touched = now
+        self._mission_ack(it.mission_id, st.contiguous, R.USV_MISSION_ACCEPTED, STAGE_ITEM, now)
+
+    def _on_end(self, e: Any, now: float) -> None:
+        st, a = self.staging, self.active
+        mid = e.mission_id
+        if st is None or st.mission_id != mid:
+            if a is not None and (a.mission_id, a.crc32) == (mid, e.crc32):
+                return self._mission_ack(mid, len(a.items), R.USV_MISSION_ACCEPTED, STAGE_END,
+                                         now)  # a retry after the activation
+            result = R.USV_MISSION_EXPIRED if mid == self.expired_id \
+                else R.USV_MISSION_UNKNOWN_MISSION
+            return self._mission_ack(mid, 0, result, STAGE_END, now)
+        if st.state == ST_VERIFIED:
+            return self._mission_ack(mid, st.count, R.USV_MISSION_ACCEPTED, STAGE_END, now)
+        if (e.crc32, e.count) != (st.crc32, st.count):
+            return self._mission_ack(mid, st.contiguous, R.USV_MISSION_CRC_MISMATCH, STAGE_END,
+                                     now)
+        n = st.contiguous
+        if n < st.count:
+            return self._mission_ack(mid, n, R.USV_MISSION_MISSING_ITEMS, STAGE_END, now)
+        items = tuple(st.items[i] for i in range(st.count))
+        bad = sequence_problem(items)
+        if bad:
+            self.staging = None
+            self._text(mav.MAV_SEVERITY_WARNING, f"item {bad[0]}: t_ms not increasing", now)
+            return self._mission_ack(mid, bad[0], R.USV_MISSION_OUT_OF_RANGE, STAGE_END, now)
+        if wire.item_crc32(items) != st.crc32:
+            self.staging = None
+            return self._mission_ack(mid, 0, R.USV_MISSION_CRC_MISMATCH, STAGE_END, now)
+        mission = ActiveMission(mid, st.crc32, items)
+        if st.swap_at_ms:
+            if self.state != S_RUNNING or st.swap_at_ms <= self.uptime_ms:
+                self.staging = None
+                self._text(mav.MAV_SEVERITY_WARNING, f"swap of {mid} refused: instant passed "
+                           "or not running", now)
+                return self._mission_ack(mid, 0, R.USV_MISSION_DENIED, STAGE_END, now)
+            st.state = ST_VERIFIED
+            self._swap_mission = mission
+            self._mission_ack(mid, st.count, R.USV_MISSION_ACCEPTED, STAGE_END, now)
+            self._report(now)
+            return None
+        if self.state in (S_RUNNING, S_HOLD, S_FAILSAFE):
+            self.staging = None
+            return self._mission_ack(mid, 0, R.USV_MISSION_DENIED, STAGE_END, now)
+        self.vehicle.set_mission(self._waypoints(items))  # built whole, then swapped in
+        self.active, self.staging, self.state = mission, None, S_READY
+        self._mission_ack(mid, st.count, R.USV_MISSION_ACCEPTED, STAGE_END, now)
+        self._text(mav.MAV_SEVERITY_INFO, f"mission {mid} active: {len(items)} waypoints", now)
+        self._report(now)
         return None
 
-    def _on_end(self, e: m.MissionEnd, now: float) -> None:
-        a = self.active
-        if (self.stager.staging is None and a is not None and e.mission_id == a.mission_id
-                and e.mission_crc == a.begin.mission_crc):
-            self._send(m.MissionAck(e.mission_id, STAGE.END, 0, len(a.items)))  # duplicate END
-            return
-        if self.state == m.State.RUNNING:
-            self._send(m.MissionNak(e.mission_id, STAGE.END, 0, NAK.BUSY, 0))
-            return
-        begin = self.stager.staging.begin if self.stager.staging else None
-        answer, items = self.stager.on_end(e)
-        if items is None or begin is None:
-            self._send(answer)
-            return
-        waypoints = self._waypoints(begin, items)  # build fully, then swap: atomic
-        self.vehicle.set_mission(waypoints)
-        self.active = ActiveMission(begin, tuple(items))
-        self.state, self.mode, self.failsafe = m.State.READY, m.Mode.STANDBY, False
-        self._send(answer)
-        self._text(m.Severity.INFO, f"mission {e.mission_id} active: {len(items)} waypoints")
-        self._report_state(now)
+    def _on_read(self, r: Any, now: float) -> None:
+        a, st = self.active, self.staging
+        items: dict[int, MissionItem] | tuple[MissionItem, ...] | None = None
+        if a is not None and a.mission_id == r.mission_id:
+            items = a.items
+        elif st is not None and st.mission_id == r.mission_id:
+            items = st.items
+        if items is None:
+            return self._mission_ack(r.mission_id, 0, R.USV_MISSION_UNKNOWN_MISSION,
+                                     STAGE_READ, now)
+        it = items[r.seq] if (isinstance(items, dict) and r.seq in items) or \
+            (isinstance(items, tuple) and r.seq < len(items)) else None
+        if it is None:
+            return self._mission_ack(r.mission_id, r.seq, R.USV_MISSION_BAD_SEQ, STAGE_READ,
+                                     now)
+        self._send(self.codec.mav.usv_mission_item_encode(
+            self.cfg.station_id, wire.STATION_COMPONENT, it.mission_id, it.seq, it.lat, it.lon,
+            it.t_ms, it.speed_cms, it.course_cdeg, it.heading_cdeg), now)
+        return None
 
-    def _waypoints(self, begin: m.MissionBegin, items: list[m.MissionItem]) -> list[Waypoint]:
+    def _on_guidance(self, g: Any, now: float) -> None:
+        if self.state != S_RUNNING or g.valid_ms == 0:
+            return
+        heading = math.radians(float(self.frame.compass_to_heading_deg(g.heading_cdeg / 100)))
+        self.vehicle.set_guidance(heading, g.speed_cms / 100)
+        self.guided_until = now + g.valid_ms / 1000
+
+    def _clear_guidance(self) -> None:
+        if self.guided_until is not None:
+            self.vehicle.clear_guidance()
+            self.guided_until = None
+
+    def _waypoints(self, items: tuple[MissionItem, ...]) -> list[Waypoint]:
         """Wire items (geodetic) to the vehicle's world frame (the sim's ramp frame)."""
-        lat = np.array([it.lat_e7 for it in items]) / 1e7
-        lon = np.array([it.lon_e7 for it in items]) / 1e7
+        lat = np.array([it.lat for it in items]) / 1e7
+        lon = np.array([it.lon for it in items]) / 1e7
         x, y = self.frame.to_ramp(lat, lon)
         heading = np.radians(self.frame.compass_to_heading_deg(
             np.array([it.heading_cdeg for it in items]) / 100))
         return [Waypoint(float(x[i]), float(y[i]), it.t_ms / 1000, it.speed_cms / 100,
                          float(heading[i])) for i, it in enumerate(items)]
 
-    def _on_command(self, c: m.Command, now: float) -> None:
-        ack = self.recent_commands.get(c.command_id)
-        if ack is not None and ack.command == c.command:
-            self._send(ack)  # a retry: answer again, do not execute twice
-            return
-        result = self._execute(c, now)
-        ack = m.CommandAck(c.command_id, c.command, result, self.state)
-        self.recent_commands[c.command_id] = ack
-        while len(self.recent_commands) > 32:
-            self.recent_commands.popitem(last=False)
-        self._send(ack)
-        self._report_state(now)
-
-    def _execute(self, c: m.Command, now: float) -> m.CommandResult:
-        R, S = m.CommandResult, m.State
-        state = self.state
-        if c.command == m.CommandCode.START:
-            if self.active is None:
-                return R.NO_MISSION
-            if c.mission_id != self.active.mission_id:
-                return R.MISSION_MISMATCH
-            if state != S.READY:
-                return R.REJECTED_STATE
-            self.vehicle.start()
-            self.state, self.mode = S.RUNNING, m.Mode.AUTO
-            self._text(m.Severity.INFO, f"mission {self.active.mission_id} started")
-        elif c.command == m.CommandCode.HOLD:
-            if state not in (S.RUNNING, S.HOLD):
-                return R.REJECTED_STATE
-            self.vehicle.hold()
-            self.state, self.mode = S.HOLD, m.Mode.STANDBY
-        elif c.command == m.CommandCode.RESUME:
-            if state not in (S.HOLD, S.RUNNING):
-                return R.REJECTED_STATE
-            if state == S.HOLD:
-                self.vehicle.resume()
-            self.state, self.mode, self.failsafe = S.RUNNING, m.Mode.AUTO, False
-        elif c.command == m.CommandCode.ABORT:
-            if self.active is not None or state not in (S.IDLE, S.ABORTED):
-                self.vehicle.abort()
-                self._text(m.Severity.WARNING, "aborted: thrusters stopped, mission dropped")
-            self.active, self.failsafe = None, False
-            self.state, self.mode = S.ABORTED, m.Mode.STANDBY
-        else:
-            return R.UNKNOWN_COMMAND
-        return R.ACCEPTED
-
-    def _on_guidance(self, g: m.GuidanceSetpoint, now: float) -> None:
-        if self.state != m.State.RUNNING or g.valid_ms == 0:
-            return
-        heading = math.radians(float(self.frame.compass_to_heading_deg(g.heading_cdeg / 100)))
-        self.vehicle.set_guidance(heading, g.speed_cms / 100)
-        self.mode = m.Mode.GUIDED
-        self.guidance_until = now + g.valid_ms / 1000
-
     # ---- time
     def update(self, now: float) -> None:
-        """Advance to link time `now`: vehicle, guidance expiry, failsafe, periodic frames.
-
-        TELEMETRY frames keep a fixed schedule, `started + k * telemetry_period` of the
-        link clock (k/telemetry_hz of boat time): the vehicle is advanced to each due
-        instant and sampled there, so a late call never shifts the grid. After a stall
-        longer than MAX_CATCH_UP_S the missed frames are skipped, the grid kept.
-        """
-        period = self.telemetry_period
-        behind = now - self.next_telemetry
-        if behind > MAX_CATCH_UP_S:
-            self.next_telemetry += math.floor(behind / period) * period
-        while self.next_telemetry <= now:
-            self._advance_to(self.next_telemetry)
-            self._send(self.telemetry())
-            self.next_telemetry += period
-        self._advance_to(now)
-        if self.mode == m.Mode.GUIDED and now >= self.guidance_until:
-            self.vehicle.clear_guidance()
-            self.mode = m.Mode.AUTO if self.state == m.State.RUNNING else m.Mode.STANDBY
-        if self.state == m.State.RUNNING and self.vehicle.state.mission_complete:
-            self.state, self.mode = m.State.DONE, m.Mode.STANDBY
-            self._text(m.Severity.INFO, f"mission {self.active.mission_id} complete")
-            self._report_state(now)
-        if self.linked and now - self.last_rx > self.cfg.failsafe_timeout_s:
-            self._link_lost(now, f"no frame from the station for "
-                                 f"{self.cfg.failsafe_timeout_s:.1f} s")
-        if now >= self.next_heartbeat:
-            self._report_state(now)
-
-    @property
-    def telemetry_period(self) -> float:
-        """Link-clock seconds between TELEMETRY frames: `telemetry_hz` per second of boat
-        time (so a faster sim sends faster), at most 50 frames per second on the link."""
-        return max(1.0 / (self.cfg.telemetry_hz * self.cfg.sim_speed), 1.0 / 50.0)
-
-    def _link_lost(self, now: float, reason: str) -> None:
-        """Failsafe: hold station when running, and report it."""
-        self.linked = False
-        if self.state == m.State.RUNNING:
-            self.vehicle.hold()
-            self.state, self.mode, self.failsafe = m.State.HOLD, m.Mode.STANDBY, True
-            self._text(m.Severity.CRITICAL, f"failsafe hold: {reason}"[:m.STATUS_TEXT_MAX])
-        else:
-            self._text(m.Severity.WARNING, f"link lost: {reason}"[:m.STATUS_TEXT_MAX])
-        self._report_state(now)
-
-    def _advance_to(self, now: float) -> None:
+        """Advance to link time `now`: vehicle (up to a swap instant exactly), guidance
+        expiry, failsafe, staging expiry, telemetry and heartbeat on a fixed boat-time grid."""
         dt_link = max(0.0, now - self.last_now)
-        self.last_now = max(self.last_now, now)
-        self._advance_vehicle(dt_link * self.cfg.sim_speed)
+        self.last_now = now
+        target = self.boat_time + dt_link * self.cfg.sim_speed
+        while True:  # each timer at its own boat-time instant, in order
+            st = self.staging
+            swap_t = st.swap_at_ms / 1000 if st is not None and st.state == ST_VERIFIED \
+                and st.swap_at_ms else math.inf
+            due = min(swap_t, self.next_heartbeat, self.next_telemetry)
+            if due > target:
+                break
+            self._advance(due - self.boat_time)
+            if due == swap_t:
+                self._do_swap(now)
+                continue
+            full = False
+            if self.next_heartbeat <= due:
+                self._heartbeat(now)
+                self.next_heartbeat = _next_on_grid(self.next_heartbeat, self.boat_time,
+                                                    self.cfg.heartbeat_period_s)
+                full = True
+            if self.next_telemetry <= due:
+                self._send_telemetry(now, full)
+                self.next_telemetry = _next_on_grid(self.next_telemetry, self.boat_time,
+                                                    1.0 / self.cfg.telemetry_hz)
+        self._advance(target - self.boat_time)
+        if self.guided_until is not None and now >= self.guided_until:
+            self._clear_guidance()
+        if self.state == S_RUNNING and self.vehicle.state.mission_complete:
+            self.state = S_DONE
+            self._text(mav.MAV_SEVERITY_INFO, f"mission {self.active.mission_id} complete", now)
+            self._report(now)
+        if self.linked and now - self.last_rx > self.cfg.failsafe_timeout_s:
+            self._failsafe(now)
+        st = self.staging
+        if st is not None and st.state == ST_RECEIVING and \
+                now - st.touched > self.cfg.staging_timeout_s:
+            self.expired_id, self.staging = st.mission_id, None
+            self._text(mav.MAV_SEVERITY_WARNING, f"staging of {st.mission_id} expired", now)
+            self._report(now)
 
-    def _advance_vehicle(self, dt: float) -> None:
-        while dt > 1e-12:
-            h = min(dt, self.cfg.max_step_s)
+    def _do_swap(self, now: float) -> None:
+        st, new = self.staging, self._swap_mission
+        self.staging = None
+        if self.state != S_RUNNING or new is None:
+            self._text(mav.MAV_SEVERITY_WARNING, f"swap to {st.mission_id} dropped: not "
+                       "running at the instant", now)
+        else:
+            self.vehicle.set_mission(self._waypoints(new.items))
+            self.vehicle.start()
+            self.active = new
+            self.activations.append((self.boat_time, new.mission_id))
+            self._text(mav.MAV_SEVERITY_INFO, f"swapped to mission {new.mission_id} at "
+                       f"{self.uptime_ms} ms", now)
+        self._swap_mission = None
+        self._report(now)
+
+    def _failsafe(self, now: float) -> None:
+        self.linked = False
+        if self.state in (S_RUNNING, S_HOLD):
+            self.vehicle.hold()
+            self._clear_guidance()
+            self.state = S_FAILSAFE
+            self.failsafes += 1
+            self._text(mav.MAV_SEVERITY_CRITICAL,
+                       f"failsafe: no station for {self.cfg.failsafe_timeout_s:g} s", now)
+        else:
+            self._text(mav.MAV_SEVERITY_WARNING, "link lost", now)
+        self._report(now)
+
+    def _advance(self, dt: float) -> None:
+        end = self.boat_time + dt
+        while end - self.boat_time > 1e-9:
+            h = min(end - self.boat_time, self.cfg.max_step_s)
             self.vehicle.step(h)
             s = self.vehicle.state
             self.battery.step(h, s.thrust_left, s.thrust_right)
             self.boat_time += h
-            dt -= h
+        self.boat_time = max(self.boat_time, end)
 
     def next_deadline(self) -> float:
-        d = min(self.next_telemetry, self.next_heartbeat)
+        """Link time of the next timer (telemetry, heartbeat, failsafe, guidance, swap)."""
+        speed = self.cfg.sim_speed
+        boat_next = min(self.next_telemetry, self.next_heartbeat)
+        st = self.staging
+        if st is not None and st.state == ST_VERIFIED and st.swap_at_ms:
+            boat_next = min(boat_next, st.swap_at_ms / 1000)
+        d = self.last_now + max(0.0, boat_next - self.boat_time) / speed
         if self.linked:
             d = min(d, self.last_rx + self.cfg.failsafe_timeout_s + 1e-3)
-        if self.mode == m.Mode.GUIDED:
-            d = min(d, self.guidance_until)
+        if self.guided_until is not None:
+            d = min(d, self.guided_until)
+        if self._telemetry and self.cfg.baud:
+            d = min(d, self._line_free_at)
         return d
 
     # ---- telemetry
-    def telemetry(self) -> m.Telemetry:
+    def _send_telemetry(self, now: float, full: bool = False) -> None:
+        """USV_THRUST and GLOBAL_POSITION_INT (last: it completes a station row) at
+        telemetry_hz; ATTITUDE, GPS_RAW_INT, VFR_HUD, NAV_CONTROLLER_OUTPUT with `full`."""
         s = self.vehicle.state
+        e = self.codec.mav
         dx, dy = self.gps.sample(1.0 / self.cfg.telemetry_hz)
         lat, lon = self.frame.to_geodetic(s.x + dx, s.y + dy)
+        lat_e7, lon_e7 = round(float(lat) * 1e7), round(float(lon) * 1e7)
         compass = self.frame.heading_to_compass_deg
-        return m.Telemetry(
-            time_ms=round(self.boat_time * 1000) & 0xFFFFFFFF,
-            lat_e7=round(float(lat) * 1e7), lon_e7=round(float(lon) * 1e7),
-            fix_type=self.gps.fix_type, satellites=self.gps.satellites,
-            hdop_c=_clamp(round(self.gps.hdop * 100), 0, 0xFFFF),
-            sog_cms=_clamp(round(s.speed * 100), 0, 0xFFFF),
-            cog_cdeg=round(float(compass(math.degrees(s.course))) * 100) % 36000,
-            heading_cdeg=round(float(compass(math.degrees(s.heading))) * 100) % 36000,
-            yaw_rate_cdegs=_clamp(round(-math.degrees(s.yaw_rate) * 100), -0x8000, 0x7FFF),
-            thrust_left_pm=_clamp(round(s.thrust_left * 1000), -1000, 1000),
-            thrust_right_pm=_clamp(round(s.thrust_right * 1000), -1000, 1000),
-            battery_mv=_clamp(round(self.battery.voltage * 1000), 0, 0xFFFF),
-            wp_index=_clamp(s.waypoint_index, 0, 0xFFFF),
-            xte_cm=_clamp(round(s.cross_track_error * 100), -0x8000, 0x7FFF),
-            state=self.state, mode=self.mode, flags=self.flags,
-        )
+        cog = float(compass(math.degrees(s.course))) % 360
+        hdg = float(compass(math.degrees(s.heading))) % 360
+        t_ms = self.uptime_ms
+        yaw = math.radians(hdg)
+        yaw = yaw - 2 * math.pi if yaw > math.pi else yaw
+        vn, ve = s.speed * math.cos(math.radians(cog)), s.speed * math.sin(math.radians(cog))
+        xte = -s.cross_track_error  # wire: positive left of the track
+        send = self._send
+        if full:  # the slower streams: once a second, with the heartbeat
+            send(e.attitude_encode(t_ms, 0.0, 0.0, yaw, 0.0, 0.0, -s.yaw_rate), now,
+                 telemetry=True)
+            send(e.gps_raw_int_encode(
+                int(self.boat_time * 1e6), self.gps.fix_type, lat_e7, lon_e7, 0,
+                _clamp(round(self.gps.hdop * 100), 0, 0xFFFE), 0xFFFF,
+                _clamp(round(s.speed * 100), 0, 0xFFFE), round(cog * 100) % 36000,
+                self.gps.satellites), now, telemetry=True)
+            throttle = _clamp(round(50 * (abs(s.thrust_left) + abs(s.thrust_right))), 0, 100)
+            send(e.vfr_hud_encode(s.speed, s.speed, round(hdg) % 360, throttle, 0.0, 0.0), now,
+                 telemetry=True)
+            send(e.nav_controller_output_encode(0.0, 0.0, round(hdg), round(cog), 0, 0.0, 0.0,
+                                                xte), now, telemetry=True)
+        send(e.usv_thrust_encode(t_ms, _clamp(round(s.thrust_left * 1000), -1000, 1000),
+                                 _clamp(round(s.thrust_right * 1000), -1000, 1000), xte, 0.0),
+             now, telemetry=True)
+        send(e.global_position_int_encode(t_ms, lat_e7, lon_e7, 0, 0,
+                                          _clamp(round(vn * 100), -32768, 32767),
+                                          _clamp(round(ve * 100), -32768, 32767), 0,
+                                          round(hdg * 100) % 36000), now, telemetry=True)
+
+
+_FROM_STATION = {
+    "HEARTBEAT": lambda self, msg, now: None,
+    "TIMESYNC": BoatProtocol._on_timesync,
+    "COMMAND_INT": BoatProtocol._on_command,
+    "COMMAND_LONG": BoatProtocol._on_command_long,
+    "USV_MISSION_BEGIN": BoatProtocol._on_begin,
+    "USV_MISSION_ITEM": BoatProtocol._on_item,
+    "USV_MISSION_END": BoatProtocol._on_end,
+    "USV_MISSION_READ": BoatProtocol._on_read,
+    "USV_GUIDANCE": BoatProtocol._on_guidance,
+}
+
+_COMMANDING = frozenset(("COMMAND_INT", "COMMAND_LONG", "USV_MISSION_BEGIN", "USV_MISSION_ITEM",
+                         "USV_MISSION_END", "USV_MISSION_READ", "USV_GUIDANCE"))
+
+
+def _next_on_grid(scheduled: float, now: float, period: float) -> float:
+    """The next instant on the fixed grid scheduled + k * period after now."""
+    nxt = scheduled + period
+    if nxt <= now:
+        nxt += ((now - nxt) // period + 1) * period
+    return nxt
 
 
 def _clamp(v: int, lo: int, hi: int) -> int:

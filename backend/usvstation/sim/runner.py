@@ -4,15 +4,18 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
+import json
 import math
+import os
 import time
 from collections.abc import Awaitable, Callable
 from dataclasses import dataclass
+from pathlib import Path
 
 from usvstation.geo import RampFrame
 from usvstation.link.transport import ByteStream, open_stream
 from usvstation.scenario import Scenario
-from usvstation.sim.boat import BoatConfig, BoatProtocol
+from usvstation.sim.boat import BoatConfig, BoatProtocol, NonVolatile
 from usvstation.sim.sensors import GpsNoise
 from usvstation.sim.vehicle import KinematicVehicle, Vehicle
 
@@ -49,9 +52,11 @@ class SimulatedBoat:
 
     boat: BoatProtocol
     log: Callable[[str], None] | None = None
+    nv_path: Path | None = None  # the boat's "flash": its NonVolatile, written on change
 
     async def run(self, stream: ByteStream, stop: asyncio.Event | None = None) -> str:
         """Serve until the stream closes (returns why) or `stop` is set."""
+        self._saved_floor = self.boat.nv.sign_floor
         stop = stop or asyncio.Event()
         reader = asyncio.get_running_loop().create_task(self._read(stream))
         try:
@@ -78,32 +83,53 @@ class SimulatedBoat:
             await self._flush(stream)
 
     async def _flush(self, stream: ByteStream) -> None:
+        if self.nv_path is not None and self.boat.nv.sign_floor != self._saved_floor:
+            self._saved_floor = self.boat.nv.sign_floor
+            save_nv(self.nv_path, self.boat.nv)
         if self.log is not None:
             for line in self.boat.log:
                 self.log(line)
         self.boat.log.clear()
-        data = self.boat.data_to_send()
+        data = self.boat.data_to_send(time.monotonic())
         if data:
             with contextlib.suppress(ConnectionError, OSError):
                 await stream.write(data)
 
 
+def load_nv(path: Path) -> NonVolatile:
+    """The boat's non-volatile memory from a JSON file (missing: a factory-new boat)."""
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        return NonVolatile()
+    except (OSError, ValueError) as exc:
+        raise ValueError(f"nv file {path}: {exc}") from None
+    return NonVolatile(sign_floor=int(data.get("sign_floor", 0)))
+
+
+def save_nv(path: Path, nv: NonVolatile) -> None:
+    tmp = path.with_suffix(path.suffix + ".tmp")
+    tmp.write_text(json.dumps({"sign_floor": nv.sign_floor}), encoding="utf-8")
+    os.replace(tmp, path)
+
+
 def make_boat(frame: RampFrame, *, x: float = 85.0, y: float = 10.0, heading_deg: float = 180.0,
-              config: BoatConfig | None = None, seed: int = 0,
-              vehicle: Vehicle | None = None) -> BoatProtocol:
-    """A simulated boat at ramp-frame (x, y) with a KinematicVehicle unless one is given."""
+              config: BoatConfig | None = None, seed: int = 0, key: bytes | None = None,
+              vehicle: Vehicle | None = None, nv: NonVolatile | None = None) -> BoatProtocol:
+    """A simulated boat at ramp-frame (x, y) with a KinematicVehicle unless one is given;
+    signing with `key` (None: unsigned, --insecure-link), its clock on the wall clock."""
     vehicle = vehicle or KinematicVehicle(x, y, math.radians(heading_deg))
-    return BoatProtocol(vehicle, frame, config or BoatConfig(), gps=GpsNoise(seed=seed),
-                        now=time.monotonic())
+    return BoatProtocol(vehicle, frame, config or BoatConfig(), key=key, nv=nv,
+                        gps=GpsNoise(seed=seed), now=time.monotonic(), unix_time=time.time())
 
 
 async def serve_on_url(boat: BoatProtocol, url: str, baud: int, *,
                        log: Callable[[str], None] = print, reconnect_s: float = 1.0,
-                       stop: asyncio.Event | None = None,
+                       stop: asyncio.Event | None = None, nv_path: Path | None = None,
                        opener: Callable[[str, int], Awaitable[ByteStream]] = open_stream) -> None:
     """Serve on a serial device or URL, reopening it when it closes or fails to open."""
     stop = stop or asyncio.Event()
-    sim = SimulatedBoat(boat, log)
+    sim = SimulatedBoat(boat, log, nv_path)
     while not stop.is_set():
         try:
             stream = await opener(url, baud)

@@ -305,8 +305,10 @@ class ThreeDView:
             pts = np.array(self._track)
             self.server.scene.add_line_segments("/track/path", polyline_segments(pts),
                                                 colors=TRACK_COLOR, thickness=0.3)
-            if t > self.horizon_s:  # a run longer than the plan: let the slider reach it
-                self._set_horizon(math.ceil(t))
+            if t > self.horizon_s:  # a run longer than the plan: slider and obstacles reach it
+                self._set_horizon(math.ceil(t * HORIZON_MARGIN))
+                if self.scenario is not None:
+                    self._draw_obstacles()
             follow = self.follow_live
         if follow:
             self.set_time(min(t, self.horizon_s))

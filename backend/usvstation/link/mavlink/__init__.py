@@ -1,0 +1,1 @@
+"""Generated MAVLink codec of usv-link 2 (protocol/generate.py)."""

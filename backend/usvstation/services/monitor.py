@@ -1,0 +1,314 @@
+"""The live loop's edges: the plan monitor on every telemetry frame, alerts, re-planning.
+
+`MonitorService` observes the live hub: a `run` event (state active) arms it with the
+running plan, each `telemetry` frame of that run is assessed by world/monitor.py against
+the world's targets, alert levels that rise become alert records, stored
+(store/alerts.py) and published as {"type": "alert", "data": record}; a per-target table
+goes out as {"type": "monitor", ...} at most twice a second. Warnings go to
+`ReplanService`, which applies the `--replan` policy (world/replan.py): it plans the new
+problem with the station's planner and, by policy, proposes it to the operator or swaps
+it onto the boat. The swap itself is usv-link 2's hot swap, reached through
+`BoatService.swap_mission(plan_id)`; without it a re-plan stops at "planned".
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import logging
+import time
+import uuid
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from usvstation.scenario import Scenario, parse_scenario
+from usvstation.services.boat import BoatError, BoatService
+from usvstation.services.hub import LiveHub
+from usvstation.services.plans import PlanService
+from usvstation.services.world import WorldService
+from usvstation.store.alerts import AlertStore
+from usvstation.store.db import utc_now
+from usvstation.world.model import compass_to_enu
+from usvstation.world.monitor import (
+    AlertEvent,
+    AlertTracker,
+    Assessment,
+    BoatState,
+    MonitorConfig,
+    TargetState,
+    assess,
+)
+from usvstation.world.replan import (
+    Policy,
+    ReplanImpossible,
+    ReplanState,
+    decide,
+    replan_scenario,
+)
+
+log = logging.getLogger(__name__)
+MONITOR_EVERY_S = 0.5
+ASSESS_MIN_INTERVAL_S = 0.1  # every frame up to 10 Hz (telemetry runs at 5 Hz of boat time)
+DEFAULT_TIME_MARGIN_S = 5.0
+MIN_WARNING_M = 0.3  # the clearance warning threshold when R_c is smaller
+OWN_SHIP_AGE_S = (5.0, 10.0, 30.0)  # a silent own-ship position: advisory, caution, warning
+NO_HOT_SWAP = ("the boat link has no hot swap (usv-link 2, BoatService.swap_mission): "
+               "the re-plan is kept as a plan; hold, abort and upload it to use it")
+
+
+class MonitorService:
+    """Assesses every telemetry frame of the running mission; raises alerts."""
+
+    def __init__(self, hub: LiveHub, alerts: AlertStore, world: WorldService,
+                 boat: BoatService, plans: PlanService, policy: Policy,
+                 clock: Callable[[], float] = time.monotonic) -> None:
+        self.hub, self.alerts, self.world, self.boat, self.plans = hub, alerts, world, boat, plans
+        self.clock = clock
+        self.replan = ReplanService(self, policy)
+        self.run: int | None = None
+        self.scenario: Scenario | None = None
+        self.waypoints: np.ndarray | None = None
+        self.t0: float | None = None  # boat time of the plan's t = 0
+        self.config = MonitorConfig()
+        self.tracker = AlertTracker(self.config)
+        self.last: dict[str, Any] | None = None
+        self.last_assessment: Assessment | None = None
+        self.last_row: dict[str, Any] | None = None
+        self.frames = 0
+        self._published_at = -1e9
+        self._assessed_at = -1e9
+        self._tasks: set[asyncio.Task] = set()
+        hub.observers.append(self.on_event)
+
+    async def stop(self) -> None:
+        for task in list(self._tasks):
+            task.cancel()
+        for task in list(self._tasks):
+            with contextlib.suppress(asyncio.CancelledError, Exception):
+                await task
+
+    def spawn(self, coro: Any) -> None:
+        task = asyncio.create_task(coro)
+        self._tasks.add(task)
+        task.add_done_callback(self._tasks.discard)
+
+    # --- events ------------------------------------------------------------------------------
+    def on_event(self, kind: str, data: dict[str, Any]) -> None:
+        if kind == "telemetry":
+            self.on_telemetry(data)
+        elif kind == "run":
+            if data.get("state") == "active":
+                self.arm(data["id"], data.get("mission"))
+            elif data.get("id") == self.run:
+                self.disarm()
+
+    def arm(self, run: int, mission_id: str | None) -> None:
+        """A run started: monitor its plan; the scenario's obstacles start where the plan
+        assumed them (their t = 0 is the plan's start)."""
+        mission = self.boat.missions.get(mission_id or "")
+        plan_id = mission.get("plan_id") if isinstance(mission, dict) \
+            else getattr(mission, "plan_id", None)  # a dict here, a record with usv-link 2
+        job = self.plans.get(plan_id) if plan_id else None
+        if not job or not job.get("plan"):
+            return
+        self.use_plan(job, run)
+        pose = self.world.world.ramp(self.world.clock())
+        if pose is not None and self.scenario is not None:
+            self.world.world.set_manual(
+                self.world.clock(), [(o.x, o.y, o.radius, o.vx, o.vy)
+                                     for o in self.scenario.obstacles], pose.frame)
+
+    def use_plan(self, job: dict[str, Any], run: int | None) -> None:
+        """Monitor `job`'s plan from the next frame on (a new run, or a swapped re-plan)."""
+        self.run = run
+        self.scenario = parse_scenario(job["scenario"])
+        wps = job["plan"]["waypoints"]
+        self.waypoints = np.array([[w["x"], w["y"], w["t"]] for w in wps], dtype=float)
+        v = self.scenario.vessel
+        self.config = MonitorConfig(
+            clearance_margin_m=v.length / 2.0 + v.compensation_radius,
+            clearance_warning_m=max(v.compensation_radius, MIN_WARNING_M),
+            time_margin_s=float(getattr(v, "time_margin_s", DEFAULT_TIME_MARGIN_S)))
+        self.tracker = AlertTracker(self.config)
+        self.t0 = None
+
+    def disarm(self) -> None:
+        self.run, self.waypoints, self.t0 = None, None, None
+
+    def on_telemetry(self, row: dict[str, Any]) -> None:
+        if self.waypoints is None or row.get("run") != self.run or row.get("lat") is None:
+            return
+        if self.t0 is None:
+            if row.get("mode") != "RUNNING":
+                return
+            self.t0 = float(row["boat_time"])
+        now = self.world.clock()
+        if now - self._assessed_at < ASSESS_MIN_INTERVAL_S:
+            return  # a sped-up simulation: the event loop is not spent on every frame
+        pose = self.world.world.ramp(now)
+        if pose is None:
+            return
+        self._assessed_at = now
+        frame = pose.frame
+        bx, by = frame.to_ramp(row["lat"], row["lon"])
+        ve, vn = compass_to_enu(float(row["speed"] or 0.0), float(row["course_deg"] or 0.0))
+        rvx, rvy = frame.vector_to_ramp(ve - pose.ve, vn - pose.vn)
+        fvx, fvy = frame.vector_to_ramp(pose.ve, pose.vn)
+        boat = BoatState(float(bx), float(by), float(rvx), float(rvy),
+                         float(row["boat_time"]) - self.t0,
+                         float(frame.compass_to_heading_deg(row["heading_deg"])))
+        targets = [TargetState(v.id, v.x, v.y, v.rvx, v.rvy, v.radius,
+                               known=v.source == "manual")
+                   for v in self.world.world.targets(now)]
+        a = assess(self.waypoints, boat, targets, self.scenario.vessel.length, self.config,
+                   (float(fvx), float(fvy)))
+        self.frames += 1
+        self.last_assessment, self.last_row = a, row
+        events = self.tracker.update(a)
+        own = self.world.world.own
+        if pose.moving and own.t_fix is not None:
+            age = now - own.t_fix
+            stale = self.tracker.step(
+                "own_ship_stale", None, age, OWN_SHIP_AGE_S, 1.0,
+                f"own ship position {age:.0f} s old: the ramp pose is dead-reckoned")
+            events += [stale] if stale else []
+        for event in events:
+            record = self.raise_alert(event)
+            if event.level == "warning":
+                self.replan.on_warning(record, a, targets, boat, (float(fvx), float(fvy)))
+        if now - self._published_at >= MONITOR_EVERY_S:
+            self._published_at = now
+            self.last = self.summary(a)
+            self.hub.publish("monitor", self.last)
+
+    def raise_alert(self, event: AlertEvent) -> dict[str, Any]:
+        record = {"id": uuid.uuid4().hex[:12], "time": utc_now(), "level": event.level,
+                  "kind": event.kind, "message": event.message, "target_id": event.target_id,
+                  "run_id": self.run, "acknowledged": False}
+        self.spawn(asyncio.to_thread(self.alerts.add, record))
+        self.hub.publish("alert", record)
+        return record
+
+    def summary(self, a: Assessment) -> dict[str, Any]:
+        step = max(1, len(a.path) // 60)
+        return {
+            "run": self.run, "plan_time_s": round(a.plan_time_s, 2), "slip_s": round(a.slip_s, 2),
+            "cross_track_m": round(a.cross_track_m, 2),
+            "min_clearance_m": None if a.min_clearance_m is None else round(a.min_clearance_m, 2),
+            "targets": [{"id": t.id, "min_clearance_m": round(t.min_clearance_m, 2),
+                         "t_min_s": round(t.t_min_s, 1), "dcpa_m": round(t.dcpa_m, 2),
+                         "tcpa_s": round(t.tcpa_s, 1), "encounter": t.encounter}
+                        for t in a.targets],
+            "path": [[round(float(x), 2), round(float(y), 2), round(float(s), 1)]
+                     for x, y, s in a.path[::step]],
+            "levels": {f"{k}:{t}" if t else k: lvl for (k, t), lvl in self.tracker.levels.items()},
+        }
+
+
+class ReplanService:
+    """Applies the re-plan policy to warnings; keeps every re-plan with its run."""
+
+    def __init__(self, monitor: MonitorService, policy: Policy) -> None:
+        self.monitor, self.policy = monitor, policy
+        self.replans: dict[str, dict[str, Any]] = {}
+        self.state = ReplanState()
+        self._t_event: dict[str, float] = {}
+
+    def on_warning(self, alert: dict[str, Any], a: Assessment, targets: list[TargetState],
+                   boat: BoatState, frame_velocity: tuple[float, float]) -> None:
+        m = self.monitor
+        now = m.clock()
+        action = decide(self.policy, alert["level"], alert["kind"], self.state, now)
+        if action == "none" or m.scenario is None:
+            return
+        self.state = ReplanState(in_flight=True, last_t=now)
+        record = {"id": uuid.uuid4().hex[:12], "created_at": utc_now(), "run_id": m.run,
+                  "alert_id": alert["id"], "plan_id": None, "policy": self.policy,
+                  "state": "planning", "error": None, "latency_ms": None, "mission_id": None,
+                  "dropped_targets": []}
+        self.replans[record["id"]] = record
+        self._t_event[record["id"]] = now
+        speed = float(np.hypot(boat.vx, boat.vy))
+        try:
+            scenario, dropped = replan_scenario(m.scenario, a, targets, speed, frame_velocity,
+                                                seed=len(self.replans))
+        except (ReplanImpossible, ValueError) as exc:
+            record.update(state="failed", error=str(exc))
+            self.state = ReplanState(last_t=now)
+            self._save(record)
+            return
+        record["dropped_targets"] = dropped
+        self._save(record)
+        m.spawn(self._plan(record, scenario, apply=action == "apply"))
+
+    async def _plan(self, record: dict[str, Any], scenario: Scenario, apply: bool) -> None:
+        m = self.monitor
+        try:
+            job = await m.plans.submit(scenario, "iga", scenario.planner.seed
+                                       if scenario.planner else None)
+            record["plan_id"] = job["id"]
+            while job["status"] in ("queued", "running"):
+                await asyncio.sleep(0.02)
+            if job["status"] != "done":
+                record.update(state="failed", error=job["error"])
+            elif apply:
+                await self._swap(record)
+            else:
+                record["state"] = "proposed"
+        finally:
+            self.state = ReplanState(in_flight=False,
+                                     awaiting_operator=record["state"] == "proposed",
+                                     last_t=self.state.last_t)
+            self._save(record)
+
+    async def confirm(self, replan_id: str) -> dict[str, Any]:
+        record = self.replans.get(replan_id)
+        if record is None:
+            raise BoatError(404, f"no re-plan {replan_id!r}")
+        if record["state"] != "proposed":
+            raise BoatError(409, f"re-plan {replan_id} is {record['state']}, not proposed")
+        self.state = ReplanState(in_flight=True, last_t=self.state.last_t)
+        try:
+            await self._swap(record)
+        finally:
+            self.state = ReplanState(last_t=self.state.last_t)
+            self._save(record)
+        if record["state"] != "applied":
+            raise BoatError(409, f"re-plan {replan_id}: {record['error']}")
+        return record
+
+    async def reject(self, replan_id: str) -> dict[str, Any]:
+        record = self.replans.get(replan_id)
+        if record is None:
+            raise BoatError(404, f"no re-plan {replan_id!r}")
+        if record["state"] != "proposed":
+            raise BoatError(409, f"re-plan {replan_id} is {record['state']}, not proposed")
+        record["state"] = "rejected"
+        self.state = ReplanState(last_t=self.state.last_t)
+        self._save(record)
+        return record
+
+    async def _swap(self, record: dict[str, Any]) -> None:
+        """Hot-swap the re-plan onto the boat (usv-link 2) and monitor it from then on."""
+        m = self.monitor
+        swap = getattr(m.boat, "swap_mission", None)
+        if swap is None:
+            record.update(state="planned", error=NO_HOT_SWAP)
+            return
+        try:
+            mission = await swap(record["plan_id"])
+        except BoatError as exc:
+            record.update(state="failed", error=str(exc))
+            return
+        record.update(state="applied", mission_id=mission.get("id"), error=None,
+                      latency_ms=round((m.clock() - self._t_event[record["id"]]) * 1000, 1))
+        job = m.plans.get(record["plan_id"])
+        if job is not None:
+            m.use_plan(job, m.run)
+
+    def _save(self, record: dict[str, Any]) -> None:
+        m = self.monitor
+        m.spawn(asyncio.to_thread(m.alerts.save_replan, record))
+        m.hub.publish("replan", record)

@@ -1,0 +1,176 @@
+"""The live world: ship-input sources feeding the world model, `/api/world`, world events.
+
+Lines from every `--nmea` source are decoded on the event loop (a sentence takes tens of
+microseconds) and merged into the pure world model (world/model.py); at most
+`PUBLISH_HZ` times a second a changed world goes out on the websocket as
+{"type": "world", "data": <the /api/world body>}. Silent tracks age out.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import logging
+import time
+from collections.abc import Callable
+from typing import Any
+
+from usvstation.geo import RampFrame
+from usvstation.scenario import Scenario
+from usvstation.services.hub import LiveHub
+from usvstation.shipinputs.decode import SentenceDecoder, apply_reports
+from usvstation.shipinputs.readers import Source, open_udp, parse_source, run_stream_source
+from usvstation.sim.sea import SimulatedSea
+from usvstation.store.db import utc_now
+from usvstation.world.model import World, enu_to_compass
+from usvstation.world.ships import LeverArm
+
+log = logging.getLogger(__name__)
+PUBLISH_HZ = 2.0
+
+
+class WorldService:
+    """Owns the world model and the ship-input sources."""
+
+    def __init__(self, hub: LiveHub, sources: list[str], *, simulate: bool = False,
+                 sim_speed: float = 1.0, clock: Callable[[], float] = time.monotonic) -> None:
+        self.hub, self.clock = hub, clock
+        self.simulate, self.sim_speed = simulate, sim_speed
+        self.sea: SimulatedSea | None = None
+        self._sea_stop: asyncio.Event | None = None
+        self._sea_port: int | None = None
+        self.sources: list[Source] = [parse_source(url) for url in sources]
+        self.source_state: dict[str, dict[str, Any]] = {}
+        self.world = World()
+        self.decoder = SentenceDecoder()
+        self._published = -1
+        self._transports: list[asyncio.DatagramTransport] = []
+        self._tasks: set[asyncio.Task] = set()
+        self.listeners: list[Callable[[World, float], None]] = []
+
+    # --- lifecycle -------------------------------------------------------------------------
+    async def start(self, scenario: Scenario | None) -> None:
+        for source in self.sources:
+            await self.add_source(source)
+        if scenario is not None:
+            await self.use_scenario(scenario)
+        self._spawn(self._ticker())
+
+    async def use_scenario(self, scenario: Scenario) -> None:
+        """A new working scenario; with the simulated boat, its sea (if any) starts afresh."""
+        if self.simulate:
+            await self._stop_sea()
+            self.world = World(config=self.world.config)
+        self.set_scenario(scenario)
+        if self.simulate and scenario.origin is not None and (scenario.mother_ship is not None
+                                                              or scenario.traffic):
+            if self._sea_port is None:
+                self._sea_port = await self.add_source(Source("udp", "127.0.0.1", 0))
+            assert self._sea_port is not None
+            self.sea = SimulatedSea(scenario, ("127.0.0.1", self._sea_port),
+                                    sim_speed=self.sim_speed)
+            self._sea_stop = asyncio.Event()
+            self._spawn(self.sea.run(self._sea_stop))
+
+    async def _stop_sea(self) -> None:
+        if self._sea_stop is not None:
+            self._sea_stop.set()
+            await asyncio.sleep(0)
+        self.sea, self._sea_stop = None, None
+
+    async def add_source(self, source: Source) -> int | None:
+        """Open a source; for UDP returns the bound port (useful with port 0)."""
+        key = str(source)
+        if source.kind == "udp":
+            transport, port = await open_udp(source, self.feed)
+            self._transports.append(transport)
+            self.source_state[key] = {"url": key, "state": "listening", "port": port}
+            return port
+
+        def state(text: str) -> None:
+            self.source_state[key] = {"url": key, "state": text, "port": source.port or None}
+
+        state("opening")
+        self._spawn(run_stream_source(source, self.feed, state))
+        return None
+
+    async def stop(self) -> None:
+        await self._stop_sea()
+        for transport in self._transports:
+            transport.close()
+        for task in list(self._tasks):
+            task.cancel()
+        for task in list(self._tasks):
+            with contextlib.suppress(asyncio.CancelledError, Exception):
+                await task
+
+    def _spawn(self, coro: Any) -> None:
+        task = asyncio.create_task(coro)
+        self._tasks.add(task)
+        task.add_done_callback(self._tasks.discard)
+
+    # --- inputs ----------------------------------------------------------------------------
+    def set_scenario(self, scenario: Scenario) -> None:
+        """Anchor the ramp at the scenario origin; its obstacles become `manual` tracks."""
+        ms = scenario.mother_ship
+        self.world.lever_arm = ms.lever_arm if ms is not None else LeverArm()
+        if scenario.origin is None:
+            return
+        o = scenario.origin
+        frame = RampFrame(o.lat, o.lon, o.ramp_bearing_deg)
+        self.world.anchor = frame
+        self.world.set_manual(self.clock(), [(ob.x, ob.y, ob.radius, ob.vx, ob.vy)
+                                             for ob in scenario.obstacles], frame)
+
+    def feed(self, line: bytes) -> None:
+        """One sentence from any source."""
+        t = self.clock()
+        apply_reports(self.world, t, self.decoder.feed(line, t))
+
+    async def _ticker(self) -> None:
+        while True:
+            await asyncio.sleep(1.0 / PUBLISH_HZ)
+            t = self.clock()
+            self.world.expire(t)
+            if self.world.version != self._published:
+                self._published = self.world.version
+                self.hub.publish("world", self.snapshot(t))
+                for listener in self.listeners:
+                    try:
+                        listener(self.world, t)
+                    except Exception:  # a listener's fault never stops the world
+                        log.exception("world listener failed")
+
+    # --- output ----------------------------------------------------------------------------
+    def snapshot(self, t: float | None = None) -> dict[str, Any]:
+        """The `GET /api/world` body, everything predicted to station time t (default now)."""
+        t = self.clock() if t is None else t
+        own = self.world.own
+        own_out = None
+        if own.has_fix:
+            lat, lon = own.position_at(t)
+            own_out = {"lat": lat, "lon": lon, "heading_deg": own.heading_deg,
+                       "course_deg": own.course_deg, "speed": own.speed,
+                       "age_s": round(t - (own.t_fix or t), 3)}
+        pose = self.world.ramp(t)
+        ramp_out = None
+        if pose is not None:
+            vx, vy = pose.frame.vector_to_ramp(pose.ve, pose.vn)
+            speed, course = enu_to_compass(pose.ve, pose.vn)
+            ramp_out = {"lat": pose.lat, "lon": pose.lon,
+                        "ramp_bearing_deg": round(pose.ramp_bearing_deg, 3),
+                        "vx": float(vx), "vy": float(vy), "speed": speed, "course_deg": course,
+                        "source": "own_ship" if pose.moving else "origin"}
+        targets = [
+            {"id": v.id, "source": v.source, "mmsi": v.mmsi, "name": v.name, "lat": v.lat,
+             "lon": v.lon, "x": round(v.x, 3), "y": round(v.y, 3), "vx": round(v.vx, 4),
+             "vy": round(v.vy, 4), "rvx": round(v.rvx, 4), "rvy": round(v.rvy, 4),
+             "radius": v.radius, "age_s": round(v.age_s, 3), "speed": round(v.speed, 4),
+             "course_deg": round(v.course_deg, 2)}
+            for v in self.world.targets(t)
+        ]
+        s = self.decoder.stats
+        return {"time": utc_now(), "own_ship": own_out, "ramp": ramp_out, "targets": targets,
+                "stats": {"sentences": s.sentences, "bad": s.bad, "ignored": s.ignored,
+                          "bad_reasons": dict(s.reasons),
+                          "sources": list(self.source_state.values())}}

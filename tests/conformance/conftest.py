@@ -1,0 +1,80 @@
+"""Boat processes for the usv-link 2 conformance tests (tests/conformance/test_boat.py).
+
+Every test runs against every boat in BOATS: a process that serves the boat side of the
+link on a new pseudo-terminal. The contract a boat command follows:
+  - argv gets: --link-key PATH (hex key file), --nv-file PATH (its non-volatile memory,
+    kept across restarts of the process: a reboot), --boat-id 1;
+  - it prints, as its first stdout line, a line containing "on /dev/<pty>" naming the
+    device the station opens;
+  - it places the boat at case1's start (ramp frame (85, 10), origin 30.5135 N 114.4182 E,
+    ramp bearing 90) and follows timed waypoints (kinematic vehicle), at sim speed 1.
+The C boat (protocol/c/boat/, issue 11 item 8) adds itself to BOATS.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+sys.path.insert(0, str(Path(__file__).parent))
+
+EXE = os.path.join(os.path.dirname(sys.executable), "usv-station")
+BOATS: dict[str, list[str]] = {
+    "python": [EXE, "sim", "--link", "pty", "--vehicle", "kinematic", "--scenario", "case1",
+               "--telemetry-hz", "5", "--seed", "1"],
+}
+
+
+class BoatProcess:
+    """One boat process; restart() is a reboot (same non-volatile memory, new pty)."""
+
+    def __init__(self, argv: list[str], key_path: Path, nv_path: Path) -> None:
+        self.argv = [*argv, "--link-key", str(key_path), "--nv-file", str(nv_path),
+                     "--boat-id", "1"]
+        self.proc: subprocess.Popen | None = None
+        self.device = ""
+        self.start()
+
+    def start(self) -> str:
+        self.proc = subprocess.Popen(self.argv, stdout=subprocess.PIPE,
+                                     stderr=subprocess.DEVNULL, text=True)
+        line = self.proc.stdout.readline()
+        match = re.search(r"on (/dev/\S+)", line)
+        if match is None:
+            self.stop()
+            raise RuntimeError(f"boat did not announce its device: {line!r}")
+        self.device = match.group(1)
+        return self.device
+
+    def stop(self) -> None:
+        if self.proc is not None and self.proc.poll() is None:
+            self.proc.terminate()
+            try:
+                self.proc.wait(5)
+            except subprocess.TimeoutExpired:
+                self.proc.kill()
+                self.proc.wait(5)
+        if self.proc is not None and self.proc.stdout is not None:
+            self.proc.stdout.close()
+        self.proc = None
+
+    def restart(self) -> str:
+        self.stop()
+        return self.start()
+
+
+@pytest.fixture(params=sorted(BOATS))
+def boat(request, tmp_path):
+    from usvstation.link.wire import write_key
+
+    key_path = tmp_path / "link.key"
+    write_key(key_path)
+    proc = BoatProcess(BOATS[request.param], key_path, tmp_path / "nv.json")
+    proc.key_path = key_path
+    yield proc
+    proc.stop()
