@@ -112,7 +112,7 @@ def test_full_filesystem_degrades_then_resumes(small_fs):
     filler = small_fs / "filler"
     try:
         wait_for(lambda: health(st)["telemetry_writer"]["committed"] > 0, 30, "telemetry")
-        with filler.open("wb") as f, contextlib.suppress(OSError):
+        with contextlib.suppress(OSError), filler.open("wb") as f:
             while True:
                 f.write(b"\0" * 65536)
                 f.flush()
