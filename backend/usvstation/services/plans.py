@@ -343,6 +343,7 @@ class PlanService:
                 job.update(status="failed", error=f"the plan took longer than the "
                                                   f"{self.timeout_s:g} s limit (--plan-timeout-s)")
         except (WorkerDied, OSError) as exc:
+            await asyncio.to_thread(w.proc.join, 2.0)  # reap it for its exit code
             code = w.proc.exitcode
             self._kill(i)
             self.restarts += 1
