@@ -208,9 +208,10 @@ def abuse(url: str, half_open: int, seconds: float) -> dict[str, Any]:
         "body_50mb_no_token": {"statuses": sorted({b[0] for b in bodies}),
                                "answer_ms": [b[1] for b in bodies],
                                "max_ms": max(b[1] for b in bodies)},
-        "health_during_bodies": _percentiles(during_bodies or [0.0]),
+        "health_during_bodies": _percentiles(during_bodies) if during_bodies else {"count": 0},
         "half_open_connections": half_open,
-        "health_during_half_open": _percentiles(during_half_open or [0.0]),
+        "health_during_half_open": (_percentiles(during_half_open) if during_half_open
+                                    else {"count": 0}),
         "health_errors": prober.errors,
         "loop_lag_worst_ms": health["loop_lag_ms"]["worst_since_start"],
     }
