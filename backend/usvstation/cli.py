@@ -62,6 +62,9 @@ def build_parser() -> argparse.ArgumentParser:
                       help="random seed (default: the scenario's, else 1)")
     plan.add_argument("--json", action="store_true", help="print the plan as JSON")
     plan.add_argument("--out", type=Path, help="also write the plan JSON to this file")
+    plan.add_argument("--time-budget", type=float, default=None, metavar="S",
+                      help="wall-clock budget in seconds (planner.time_budget_s, default 5): "
+                      "past it the best valid plan so far, with a warning, or exit 3")
     plan.add_argument(
         "--set", dest="settings", action="append", default=[], type=_parse_setting,
         metavar="KEY=VALUE", help="override a planner option, e.g. --set population=120",
@@ -142,6 +145,11 @@ def build_parser() -> argparse.ArgumentParser:
                      "the mission exactly")
     sim.add_argument("--sea-state", type=int, default=0, choices=range(0, 7), metavar="0-6",
                      help="waves of this sea state running with the scenario's wind (default 0)")
+    sim.add_argument("--guidance", default="avlos_comp",
+                     choices=["avlos_comp", "avlos", "los", "ilos", "alos", "sliding_curve"],
+                     help="dynamic vehicle's guidance law (default avlos_comp)")
+    sim.add_argument("--controller", default="pid", choices=["pid", "pid_mrac", "drnn_pi", "pi"],
+                     help="dynamic vehicle's autopilot (default pid)")
     sim.add_argument("--duration", type=float, default=None,
                      help="stop after this many seconds (default: run until interrupted)")
     sim.add_argument("--boat-id", type=int, default=1, help="boat system id (default 1)")
@@ -172,6 +180,8 @@ def build_parser() -> argparse.ArgumentParser:
                        help="fewer repetitions, for a smoke test (figures not for the record)")
     bench.add_argument("--episodes", type=int, default=50,
                        help="live: seeded episodes of the simulated sea (default 50)")
+    bench.add_argument("--manoeuvres", action="store_true",
+                       help="tracking: add turning circle, zig-zags, pull-out and heading steps")
     bench.add_argument("--markdown", type=Path, metavar="JSON",
                        help="print the tables for RESULTS.md from a saved --json result")
     return parser
@@ -206,12 +216,23 @@ def main(argv: list[str] | None = None) -> int:
 def _cmd_plan(args: argparse.Namespace) -> int:
     from pydantic import ValidationError
 
-    from usvstation.planning.plan import NoFeasiblePlan, plan_scenario
     from usvstation.scenario import ScenarioError, format_validation_error, load_scenario
 
-    try:
+    try:  # validate input before NumPy and SciPy are imported, so bad input fails fast
         scenario = load_scenario(args.scenario)
-        plan = plan_scenario(scenario, planner=args.planner, seed=args.seed, **dict(args.settings))
+        overrides = dict(args.settings)
+        if args.time_budget is not None:
+            overrides["time_budget_s"] = args.time_budget
+        scenario.planner_options(**overrides)
+    except ScenarioError as exc:
+        raise CliError(f"invalid scenario: {exc}", EXIT_INVALID) from None
+    except ValidationError as exc:
+        raise CliError(f"invalid option: planner.{format_validation_error(exc)}",
+                       EXIT_INVALID) from None
+    from usvstation.planning.plan import NoFeasiblePlan, plan_scenario
+
+    try:
+        plan = plan_scenario(scenario, planner=args.planner, seed=args.seed, **overrides)
     except ScenarioError as exc:
         raise CliError(f"invalid scenario: {exc}", EXIT_INVALID) from None
     except ValidationError as exc:
@@ -335,7 +356,8 @@ def _cmd_bench(args: argparse.Namespace) -> int:
     if args.name == "tracking":
         from usvstation.bench.tracking import run_tracking_bench
 
-        result = run_tracking_bench(progress=lambda msg: print(msg, file=sys.stderr, flush=True))
+        result = run_tracking_bench(progress=lambda msg: print(msg, file=sys.stderr, flush=True),
+                                    with_manoeuvres=args.manoeuvres)
         print(json.dumps(result, indent=2))
         return EXIT_OK
     from usvstation.bench.planner import render_markdown, run_planner_bench

@@ -20,8 +20,14 @@ from usvstation.world.ships import MotherShip, TrafficShip
 
 _STRICT = ConfigDict(extra="forbid", strict=True, allow_inf_nan=False)
 
-Metres = Annotated[float, Field(description="metres")]
-PositiveMetres = Annotated[float, Field(gt=0.0, description="metres, > 0")]
+MAX_COORD = 20_000.0  # m: every position within 20 km of the ramp end
+MAX_SPEED = 30.0  # m/s: every speed, current and wind
+MAX_ECHO = 80  # characters of a bad value echoed in an error message
+
+Metres = Annotated[float, Field(ge=-MAX_COORD, le=MAX_COORD, description="metres, |x| <= 20 km")]
+PositiveMetres = Annotated[float, Field(gt=0.0, le=MAX_COORD, description="metres, > 0")]
+Speed = Annotated[float, Field(ge=0.0, le=MAX_SPEED, description="m/s")]
+Velocity = Annotated[float, Field(ge=-MAX_SPEED, le=MAX_SPEED, description="m/s")]
 
 
 class Origin(BaseModel):
@@ -38,7 +44,7 @@ class Start(BaseModel):
     x: Metres
     y: Metres
     heading_deg: float = Field(180.0, ge=-360.0, le=360.0)
-    speed: float = Field(1.0, ge=0.0, description="m/s")
+    speed: float = Field(1.0, ge=0.0, le=MAX_SPEED, description="m/s")
 
 
 class Goal(BaseModel):
@@ -54,8 +60,8 @@ class Obstacle(BaseModel):
     x: Metres
     y: Metres
     radius: PositiveMetres
-    vx: float = 0.0
-    vy: float = 0.0
+    vx: Velocity = 0.0
+    vy: Velocity = 0.0
 
     @property
     def moving(self) -> bool:
@@ -66,12 +72,17 @@ class Vessel(BaseModel):
     """The USV: hull length D_USV, speed and manoeuvring limits, compensation radius R_c."""
 
     model_config = _STRICT
-    length: PositiveMetres = 1.2
-    speed_min: float = Field(0.2, gt=0.0, description="m/s")
-    speed_max: float = Field(3.0, gt=0.0, description="m/s")
-    accel_max: float = Field(0.5, gt=0.0, description="m/s^2")
+    length: float = Field(1.2, gt=0.0, le=200.0, description="hull length D_USV, m")
+    speed_min: float = Field(0.2, gt=0.0, le=MAX_SPEED, description="m/s")
+    speed_max: float = Field(3.0, gt=0.0, le=MAX_SPEED, description="m/s")
+    accel_max: float = Field(0.5, gt=0.0, le=20.0, description="m/s^2")
     turn_max_deg: float = Field(60.0, gt=0.0, le=180.0)
-    compensation_radius: float = Field(1.0, ge=0.0, description="R_c of eq. 7, m")
+    compensation_radius: float = Field(1.0, ge=0.0, le=1000.0, description="R_c of eq. 7, m")
+    time_margin_s: float = Field(
+        3.0, ge=0.0, le=60.0,
+        description="the hull stays clear of moving obstacles when this many seconds early "
+        "or late anywhere on the plan",
+    )
 
     @model_validator(mode="after")
     def _speed_range(self) -> Vessel:
@@ -87,9 +98,9 @@ class Environment(BaseModel):
     """Current and wind; directions in the ramp frame, where the flow goes to."""
 
     model_config = _STRICT
-    current_speed: float = Field(0.0, ge=0.0, description="m/s")
+    current_speed: Speed = 0.0
     current_dir_deg: float = Field(0.0, ge=-360.0, le=360.0)
-    wind_speed: float = Field(0.0, ge=0.0, description="m/s")
+    wind_speed: Speed = 0.0
     wind_dir_deg: float = Field(0.0, ge=-360.0, le=360.0)
 
 
@@ -99,11 +110,11 @@ class Scenario(BaseModel):
     model_config = _STRICT
     name: str = Field(min_length=1, max_length=200)
     kind: Literal["recovery", "transit"] = "recovery"
-    description: str = ""
+    description: str = Field("", max_length=10_000)
     origin: Origin | None = None
     start: Start
     goal: Goal = Field(default_factory=Goal)
-    obstacles: list[Obstacle] = Field(default_factory=list, max_length=500)
+    obstacles: list[Obstacle] = Field(default_factory=list, max_length=2000)
     vessel: Vessel = Field(default_factory=Vessel)
     environment: Environment = Field(default_factory=Environment)
     planner: IGAOptions | None = None
@@ -112,18 +123,12 @@ class Scenario(BaseModel):
 
     @model_validator(mode="after")
     def _geometry(self) -> Scenario:
-        if self.kind == "recovery":
-            if self.goal.x != 0.0 or self.goal.y != 0.0:
-                raise ValueError(
-                    f"goal: a recovery ends at the ramp end (0, 0) "
-                    f"(got ({self.goal.x:g}, {self.goal.y:g}))"
-                )
-            if self.start.x <= 0.0:
-                raise ValueError(
-                    f"start.x: a recovery starts out to sea, x > 0 in the ramp frame "
-                    f"(got {self.start.x:g})"
-                )
-        elif math.hypot(self.start.x - self.goal.x, self.start.y - self.goal.y) < 1.0:
+        if self.kind == "recovery" and (self.goal.x != 0.0 or self.goal.y != 0.0):
+            raise ValueError(
+                f"goal: a recovery ends at the ramp end (0, 0) "
+                f"(got ({self.goal.x:g}, {self.goal.y:g}))"
+            )
+        if math.hypot(self.start.x - self.goal.x, self.start.y - self.goal.y) < 1.0:
             raise ValueError("goal: must lie at least 1 m from the start")
         for field, point in (("start", self.start), ("goal", self.goal)):
             for i, obs in enumerate(self.obstacles):
@@ -145,6 +150,21 @@ class Scenario(BaseModel):
         return IGAOptions(**{**base, **overrides})
 
 
+def scenario_at(
+    scenario: Scenario, x: float, y: float, heading_deg: float, speed: float, t: float
+) -> Scenario:
+    """The scenario seen from a boat at ramp-frame (x, y) with hull heading and speed, `t` s
+    after the scenario's t = 0: obstacles propagated to that instant (eq. 8), which becomes
+    the new t = 0. Raises ScenarioError (one line) if the result is not a valid scenario."""
+    data = scenario.model_dump()
+    data["start"] = {"x": float(x), "y": float(y), "heading_deg": float(heading_deg) % 360.0,
+                     "speed": float(speed)}
+    for o in data["obstacles"]:
+        o["x"] += o["vx"] * t
+        o["y"] += o["vy"] * t
+    return parse_scenario(data)
+
+
 class ScenarioError(ValueError):
     """A scenario could not be read or is invalid; the message is one line naming the field."""
 
@@ -161,9 +181,17 @@ def format_validation_error(exc: ValidationError) -> str:
         elif err["type"] == "missing":
             msg = "required field is missing"
         elif "input" in err and not isinstance(err["input"], dict | list):
-            msg = f"{msg} (got {err['input']!r})"
+            msg = f"{msg} (got {echo(err['input'])})"
         parts.append(f"{loc}: {msg}" if loc else msg)
     return "; ".join(parts)
+
+
+def echo(value: Any) -> str:
+    """A bad value as shown in an error message: its repr, at most MAX_ECHO characters."""
+    if isinstance(value, int) and not isinstance(value, bool) and value.bit_length() > 200:
+        return f"an integer of about {int(value.bit_length() * 0.30103)} digits"
+    text = repr(value)
+    return text if len(text) <= MAX_ECHO else text[: MAX_ECHO - 3] + "..."
 
 
 def bundled_scenario_names() -> list[str]:
@@ -204,4 +232,6 @@ def load_scenario(ref: str | Path) -> Scenario:
         raise ScenarioError(
             f"{ref}: not valid JSON at line {exc.lineno} column {exc.colno} ({exc.msg})"
         ) from None
+    except (ValueError, RecursionError) as exc:  # e.g. an integer of more than 4300 digits
+        raise ScenarioError(f"{ref}: not valid JSON ({echo(str(exc))})") from None
     return parse_scenario(data)

@@ -60,7 +60,29 @@ export function placeOrigin(latlng) {
   $('scenario-status').textContent = `ramp origin set to ${origin.lat}, ${origin.lon}`;
 }
 
+/** Put the ramp origin where own ship's sensors place the ramp end now (lever arm applied
+ * by the station's world model); refused with a clear message without an own-ship fix. */
+async function originFromOwnShip() {
+  try {
+    const world = await api.get('/api/world');
+    if (!world.own_ship || !world.ramp || world.ramp.source !== 'own_ship') {
+      $('scenario-status').textContent = 'no own-ship position yet (serve --nmea, or a simulated mother ship)';
+      return;
+    }
+    const { lat, lon, ramp_bearing_deg: bearing } = world.ramp;
+    const origin = { lat: Number(lat.toFixed(7)), lon: Number(lon.toFixed(7)),
+      ramp_bearing_deg: Number(bearing.toFixed(3)) };
+    setPicking(false);
+    ui.editor.scenario.origin = origin;
+    ui.map.setOrigin(origin);
+    ui.editor.changed();
+  } catch (err) {
+    $('scenario-status').textContent = `own ship unavailable: ${err.message ?? err}`;
+  }
+}
+
 export function bindCharts() {
+  $('origin-from-ship').addEventListener('click', originFromOwnShip);
   $('chart-select').addEventListener('change', (e) => {
     setSetting('chart', e.target.value);
     choose(e.target.value);

@@ -28,6 +28,10 @@ BOATS: dict[str, list[str]] = {
     "python": [EXE, "sim", "--link", "pty", "--vehicle", "kinematic", "--scenario", "case1",
                "--telemetry-hz", "5", "--seed", "1"],
 }
+# the C boat (protocol/c/boat), built once per test session when a C compiler exists
+from c_boat_support import conformance_argv  # noqa: E402
+
+BOATS.update(conformance_argv())
 
 
 class BoatProcess:

@@ -20,6 +20,7 @@ from playwright.sync_api import expect
 from stationproc import StationProcess
 from test_console import open_console
 
+from usvstation.geo import RampFrame
 from usvstation.scenario import load_scenario
 from usvstation.serveproc import SCRIPT
 
@@ -400,5 +401,31 @@ def test_ramp_origin_placed_on_the_map(page, chart_station):
         # the ramp is drawn at the new origin: ramp-frame (0, 0) is where the click was
         now = page.evaluate("usvConsole.map.rampToContainerPoint(0, 0)")
         assert abs(now["x"] - point["x"]) < 1.5 and abs(now["y"] - point["y"]) < 1.5
+    finally:
+        assert st.client.put("/api/scenario", json=before).status_code == 200
+
+
+def test_ramp_origin_from_own_ship(page, chart_station):
+    """With a mother ship under way (the simulated sea's NMEA), the button puts the ramp
+    origin where own ship's sensors place the ramp end."""
+    st = chart_station
+    before = st.client.get("/api/scenario").json()
+    moving = {**before, "mother_ship": {"speed": 1.0, "course_deg": 270.0,
+                                        "lever_arm": {"forward": -30.0}}}
+    try:
+        assert st.client.put("/api/scenario", json=moving).status_code == 200
+        deadline = time.monotonic() + 60
+        while (st.client.get("/api/world").json()["ramp"] or {}).get("source") != "own_ship":
+            assert time.monotonic() < deadline, "no own-ship ramp pose in /api/world"
+            time.sleep(0.1)
+        open_console(page, st)
+        page.click("#origin-from-ship")
+        expect(page.locator("#scenario-status")).to_contain_text("saved", timeout=10_000)
+        origin = st.client.get("/api/scenario").json()["origin"]
+        ramp = st.client.get("/api/world").json()["ramp"]
+        # the ship moves 1 m/s: the saved origin is where the ramp was a moment ago
+        x, y = RampFrame(ramp["lat"], ramp["lon"], 90.0).to_ramp(origin["lat"], origin["lon"])
+        assert math.hypot(float(x), float(y)) < 30.0
+        assert origin["ramp_bearing_deg"] == pytest.approx(ramp["ramp_bearing_deg"], abs=0.01)
     finally:
         assert st.client.put("/api/scenario", json=before).status_code == 200

@@ -117,7 +117,7 @@ def test_kill_9_loses_at_most_the_last_200_ms_and_restart_resumes(tmp_path):
             while len(stored_boat_times(data)) <= len(stored):
                 assert time.monotonic() < deadline, "telemetry did not resume after the restart"
                 time.sleep(0.1)
-            assert st2.client.get("/api/boat").json()["link"]["up"]
+            assert st2.wait_link_up(30)["link"]["up"]
         finally:
             st2.stop()
     finally:

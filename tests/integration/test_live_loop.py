@@ -54,6 +54,7 @@ def poll(fn, timeout: float, what: str):
 @pytest.fixture
 def station(tmp_path):
     st = StationProcess(tmp_path / "data", "--sim-speed", "5", "--replan", "confirm")
+    st.wait_link_up()
     try:
         yield st
     finally:
@@ -88,7 +89,8 @@ def test_turning_target_warns_proposes_a_replan_and_confirm_swaps_it(station) ->
         r = c.post("/api/missions", json={"plan_id": job["id"]})
         mission = station.wait(f"/api/missions/{r.json()['id']}", "state", ("uploading",), 20)
         assert mission["state"] == "verified"
-        assert c.post("/api/boat/command", json={"command": "start"}).status_code == 200
+        assert c.post("/api/boat/command", json={"command": "start",
+                                                 "mission_id": mission["id"]}).status_code == 200
 
         warning = poll(lambda: next((a for a in c.get("/api/alerts").json()
                                      if a["level"] == "warning" and a["target_id"] == TARGET),
@@ -102,7 +104,7 @@ def test_turning_target_warns_proposes_a_replan_and_confirm_swaps_it(station) ->
         replan = poll(lambda: next((p for p in c.get("/api/replans").json()
                                     if p["state"] in ("proposed", "failed")), None),
                       120, "a proposed re-plan")
-        assert replan["state"] == "proposed", replan
+        assert replan["state"] == "proposed", replan["error"]
         warnings = {a["id"]: a for a in c.get("/api/alerts").json() if a["level"] == "warning"}
         assert replan["alert_id"] in warnings and replan["policy"] == "confirm"
         # the first warning of the run started it (the target's, or a schedule slip)
@@ -122,9 +124,15 @@ def test_turning_target_warns_proposes_a_replan_and_confirm_swaps_it(station) ->
             assert c.post("/api/boat/command", json={"command": "abort"}).status_code == 200
         else:
             assert confirm.status_code == 200 and confirm.json()["state"] == "applied"
-            final = station.wait(f"/api/missions/{mission['id']}", "state", ("active",), 120)
+            swapped = confirm.json()["mission_id"]
+            # the boat swaps at the announced instant: the old mission is replaced ("gone"),
+            # the new one runs to the ramp
+            old = station.wait(f"/api/missions/{mission['id']}", "state", ("active",), 120)
+            assert old["state"] == "gone"
+            final = station.wait(f"/api/missions/{swapped}", "state",
+                                 ("uploading", "verified", "active"), 120)
             assert final["state"] == "completed"
-            rows = c.get("/api/telemetry", params={"run": warning["run_id"]}).json()
+            rows = c.get("/api/telemetry", params={"limit": 100_000}).json()
             clearance = min(math.hypot(r["x"] - PARK[0], r["y"] - PARK[1]) for r in rows) \
                 - RADIUS - 0.6
             assert clearance > 0.0
@@ -155,6 +163,7 @@ def test_turning_target_warns_proposes_a_replan_and_confirm_swaps_it(station) ->
 @pytest.mark.parametrize("policy", ["auto", "off"])
 def test_replan_policies_auto_and_off(tmp_path, policy: str) -> None:
     st = StationProcess(tmp_path / "data", "--sim-speed", "5", "--replan", policy)
+    st.wait_link_up()
     c = st.client
     try:
         assert c.put("/api/scenario", json=scenario()).status_code == 200
@@ -162,8 +171,9 @@ def test_replan_policies_auto_and_off(tmp_path, policy: str) -> None:
              30, "the target")
         job = st.wait_plan(c.post("/api/plans", json={"seed": 1}).json()["id"], 120)
         r = c.post("/api/missions", json={"plan_id": job["id"]})
-        st.wait(f"/api/missions/{r.json()['id']}", "state", ("uploading",), 20)
-        assert c.post("/api/boat/command", json={"command": "start"}).status_code == 200
+        mission = st.wait(f"/api/missions/{r.json()['id']}", "state", ("uploading",), 20)
+        assert c.post("/api/boat/command", json={"command": "start",
+                                                 "mission_id": mission["id"]}).status_code == 200
         poll(lambda: any(a["level"] == "warning" and a["target_id"] == TARGET
                          for a in c.get("/api/alerts").json()), 60, "a warning")
         assert c.get("/api/monitor").json()["policy"] == policy

@@ -23,6 +23,7 @@ GPX = "{http://www.topografix.com/GPX/1/1}"
 @pytest.fixture(scope="module")
 def station(tmp_path_factory):
     st = StationProcess(tmp_path_factory.mktemp("data"), "--sim-speed", "5")
+    st.wait_link_up()
     yield st
     st.stop()
 

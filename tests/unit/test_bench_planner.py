@@ -25,8 +25,21 @@ def test_quick_planner_bench(tmp_path):
     assert {"elite_initial_iga", "elite_initial_eg1"} <= ab["eg1_preheating"][0].keys()
     runs = out["baseline"]["runs"]
     assert {r["deap_init"] for r in runs} == {"random", "preheated"}
+    assert {r["library"] for r in runs} == {"deap", "pymoo"}
     for r in runs:
         assert r["deap_fitness"] <= r["iga_fitness"] or r["deap_reached_iga_fitness"]
         assert r["time_ratio"] > 0
     assert out["random"]["recovery"]["count"] == 2 and out["random"]["transit"]["count"] == 2
     assert out["machine"]["cores"] >= 1
+    # issue 12: hidden families, re-planning, scaling, robustness, the paper's orderings
+    assert set(out["hidden"]) == {"pointing_away", "strong_current", "crossing_ships",
+                                  "behind_ramp", "long_wall", "dense_field"}
+    for fam in out["hidden"].values():
+        assert fam["returned_but_refused"] == []  # every plan returned passes the checker
+        assert fam["clearance_diff_max_m"] <= 0.05
+    assert out["replan"]["instants"] == 2 and out["replan"]["p99_ms"] > 0
+    assert set(out["scaling"]) == {"0", "40"}
+    assert set(out["robustness"]) == {"before", "after"}
+    assert out["robustness"]["after"]["time_margin_s"] == 3.0
+    assert all(o["verdict"] in ("holds", "holds in part", "does not hold")
+               for o in out["orderings"])

@@ -17,9 +17,11 @@ from usvstation.dynamics import (
     VesselState,
     WaveField,
     Wind,
+    drift_coefficients,
     otter,
     trimaran,
     vessel_preset,
+    wave_drift_force,
 )
 
 OTTER = otter()
@@ -155,9 +157,14 @@ def test_unknown_preset_is_named() -> None:
 # ------------------------------------------------------------------ environment
 
 
-def test_waves_from_wind_follow_eq5() -> None:
+def test_waves_from_wind_follow_eq5_with_the_dispersion_wavelength() -> None:
     w = WaveField.from_wind(0.0, 0.0)
-    assert (w.height, w.period, w.wavelength) == pytest.approx((1.5, 5.6, 0.54 * 5.6**2))
+    assert (w.height, w.period) == pytest.approx((1.5, 5.6))
+    assert w.wavelength == pytest.approx(9.81 * 5.6**2 / (2 * math.pi))  # 48.96 m
+    paper = WaveField.from_wind(0.0, 0.0, wavelength="paper")
+    assert paper.wavelength == pytest.approx(0.54 * 5.6**2)  # eq. 5 as printed
+    with pytest.raises(ValueError, match="unknown wavelength model 'airy'"):
+        WaveField.from_wind(0.0, 0.0, wavelength="airy")
     w = WaveField.from_wind(10.0, 0.0)
     assert w.height == pytest.approx(0.015 * 100 + 1.5)
     assert w.period == pytest.approx(-1.0 + 4.2 + 5.6)
@@ -166,12 +173,13 @@ def test_waves_from_wind_follow_eq5() -> None:
 def test_sea_state_3_is_the_middle_of_the_wmo_band() -> None:
     w = WaveField.from_sea_state(3, 0.0)
     assert w.height == pytest.approx(0.875)
-    assert w.wavelength == pytest.approx(0.54 * w.period**2)
+    assert w.wavelength == pytest.approx(77.72, abs=0.01)  # dispersion, T = 7.06 s
+    assert WaveField.from_sea_state(3, 0.0, "paper").wavelength == pytest.approx(26.88, abs=0.01)
     with pytest.raises(ValueError, match=r"sea state must be 0\.\.8"):
         WaveField.from_sea_state(12, 0.0)
 
 
-def test_drift_coefficients_follow_eq4_and_are_held_past_their_fit() -> None:
+def test_drift_coefficients_follow_eq4_and_decay_past_their_fit() -> None:
     from usvstation.dynamics import drift_coefficients
 
     assert drift_coefficients(0.5) == pytest.approx((
@@ -179,7 +187,19 @@ def test_drift_coefficients_follow_eq4_and_are_held_past_their_fit() -> None:
         0.46 + 6.83 * 0.5 - 15.65 * 0.25 + 8.44 * 0.125,
         -0.11 + 0.34 - 0.79 * 0.25 + 0.21 * 0.125,
     ))
-    assert drift_coefficients(5.0) == drift_coefficients(1.0)
+    assert drift_coefficients(5.0) == pytest.approx(
+        tuple(c / 25.0 for c in drift_coefficients(1.0)))
+
+
+def test_wave_drift_force_of_eq3_carries_g() -> None:
+    """Eq. 3 in newtons: 1/2 rho g L xi^2 W (the printed form lacks g, 9.81x too small)."""
+    params = otter()
+    waves = WaveField(1.0, 3.0, 1.0, math.pi / 2)  # lambda / L = 0.5, beam seas
+    f = wave_drift_force(params, waves, 0.0)
+    _, wy, wn = drift_coefficients(0.5)
+    q = 0.5 * 1025.0 * 9.81 * params.length * 0.5**2
+    assert f[1] == pytest.approx(q * wy)
+    assert f[2] == pytest.approx(q * params.length * wn)
 
 
 def test_wave_drift_pushes_the_boat_the_way_the_waves_run() -> None:
@@ -248,3 +268,16 @@ def test_kinematic_boat_takes_the_heading_and_ramps_its_speed() -> None:
     assert boat.speed == pytest.approx(1.0)
     boat.step(0.0, -3.0, 0.2)  # no going astern
     assert boat.speed == pytest.approx(0.6)
+
+
+def test_a_push_acts_only_inside_its_area() -> None:
+    """Paper 004's forces: a constant earth-frame push inside a rectangle (Table 7)."""
+    from usvstation.dynamics import Push
+
+    env = Environment(pushes=(Push(0.0, 15.0, -10.0, 10.0, -10.0, 10.0),))
+    inside = run(Vessel(OTTER, VesselState(0.0, 0.0, 0.0)), ThrustCommand(0.0, 0.0), env, 2.0)
+    outside = run(Vessel(OTTER, VesselState(50.0, 0.0, 0.0)), ThrustCommand(0.0, 0.0), env, 2.0)
+    assert inside.velocity[1] > 0.05 and abs(inside.velocity[0]) < 0.01
+    assert outside.velocity == (0.0, 0.0)
+    with pytest.raises(ValueError, match="push: need x_min < x_max"):
+        Push(1.0, 0.0, 5.0, -5.0)

@@ -11,7 +11,7 @@ from usvstation.planning.options import IGAOptions
 from usvstation.planning.problem import Problem
 from usvstation.scenario import parse_scenario
 
-OPTS = IGAOptions()  # a=4, b=0.5, c=2, d=0.5, A=10
+OPTS = IGAOptions(terms="paper", weight_b=0.5, weight_d=0.5)  # eq. 12 in the paper's units
 
 
 def problem(start=(40.0, 0.0), obstacles=(), kind="recovery", goal=(0.0, 0.0), **vessel):
@@ -22,7 +22,7 @@ def problem(start=(40.0, 0.0), obstacles=(), kind="recovery", goal=(0.0, 0.0), *
         "obstacles": [dict(zip(("x", "y", "radius", "vx", "vy"), o, strict=True))
                       for o in obstacles],
         "vessel": {"speed_min": 0.2, "speed_max": 3.0, "accel_max": 0.5, "turn_max_deg": 60.0,
-                   **vessel},
+                   "time_margin_s": 0.0, **vessel},
     }
     return Problem.from_scenario(parse_scenario(data))
 
@@ -122,3 +122,21 @@ def test_eg3_linear_penalty():
     assert ok.fitness[0] == pytest.approx(10.0)  # A (2 - Fit_d) with Fit_d = 1
     hit = evaluate(paths(straight), problem(obstacles=[(20, 3.1, 1, 0, 0)]), opts)
     assert hit.fitness[0] == pytest.approx(10.0 - 2 * 2.5)  # two violations, A/4 each
+
+
+def test_normalised_terms_mean_the_same_at_every_scale():
+    """Fit_T' = t_end v_max / D and Fit_mal' = Fit_mal / D: a path and the same path ten times
+    larger get the same fitness (issue 12)."""
+    opts = IGAOptions()
+    assert opts.terms == "normalised"
+    small = [(40, 0, 2), (30, 5, 2), (20, 5, 2), (10, 0, 2), (0, 0, 2)]
+    big = [(10 * x, 10 * y, v) for x, y, v in small]
+    ev_s = evaluate(paths(small), problem(start=(40.0, 0.0)), opts)
+    ev_b = evaluate(paths(big), problem(start=(400.0, 0.0)), opts)
+    assert ev_s.fit_t_norm[0] == pytest.approx(ev_b.fit_t_norm[0])
+    assert ev_s.fit_mal_norm[0] == pytest.approx(ev_b.fit_mal_norm[0])
+    assert ev_s.fitness[0] == pytest.approx(ev_b.fitness[0])
+    assert ev_s.fit_t_norm[0] == pytest.approx(paths(small).t[0, -1] * 3.0 / 40.0)
+    paper = IGAOptions(terms="paper", weight_b=0.5, weight_d=0.5)
+    assert evaluate(paths(small), problem(start=(40.0, 0.0)), paper).fitness[0] != \
+        pytest.approx(evaluate(paths(big), problem(start=(400.0, 0.0)), paper).fitness[0])

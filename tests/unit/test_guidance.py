@@ -139,11 +139,11 @@ def test_lookahead_past_the_last_waypoint_is_the_end() -> None:
     assert (la.x, la.y) == pytest.approx((30.0, 0.0))
 
 
-def test_boat_far_off_the_path_steers_to_the_nearest_point() -> None:
+def test_boat_far_off_the_path_steers_r_ahead_of_the_nearest_point() -> None:
     guidance = LOSGuidance(PAPER, 3.0, speed_max=8.0)
     cmd = guidance.update(pose(10.0, 5.0), 2.0)  # 10 m right of the first leg
-    assert cmd.target == pytest.approx((0.0, 5.0))
-    assert cmd.heading == pytest.approx(math.pi)  # straight at the path
+    assert cmd.target == pytest.approx((0.0, 8.0))  # closes at an angle, never circles
+    assert cmd.heading == pytest.approx(math.atan2(3.0, -10.0))  # at the path, slightly ahead
     assert guidance.tracker.find(10.0, 5.0).on_circle is False
 
 
@@ -226,8 +226,11 @@ def test_extension_continues_along_the_arrival_heading_at_the_last_speed() -> No
     assert ext.points[-1] == pytest.approx([30.0, -10.0])
     assert ext.times[-1] == pytest.approx(26.0)
     tail = PAPER.replace_tail(5.0, (31.0, 5.0))
+    # Only the last 5 m change: P (5 m before the end) is kept at its time.
+    assert tail.points[:-2] == pytest.approx(np.array([[0, 0], [0, 20], [30, 20], [30, 5]]))
+    assert tail.times[-3] == pytest.approx(20.0)
     assert tail.points[-2] == pytest.approx([31.0, 5.0])
-    assert tail.times[-2] == pytest.approx(20.0)
+    assert tail.times[-2] == pytest.approx(20.0 + 2.0 * 1.0 / (1.0 + math.hypot(1.0, 5.0)))
 
 
 def test_trajectory_from_a_plan() -> None:
@@ -290,12 +293,21 @@ def test_compensated_approach_comes_in_from_up_current_to_the_goal() -> None:
     traj = Trajectory.from_xyt([(60.0, 0.0, 0.0), (0.0, 0.0, 20.0)])
     env = Environment.with_current(0.3, math.pi / 2)
     g = CompensatedAVLOS(traj, DisturbancePredictor(otter(), env), 8.0, speed_max=3.0)
+    assert g.approach_segment is None  # decided near the end, with the drift known then
+    g.update(VesselState(25.0, 0.0, math.pi, 3.0), 12.0)
+    assert g.bend_decided
+    assert g.trajectory.points[-3] == pytest.approx([12.0, 0.0])  # the last 12 m only
     via = g.trajectory.points[-2]
-    assert via[0] == pytest.approx(12.0, abs=0.2)
+    assert via[0] == pytest.approx(8.0, abs=0.2)
     assert via[1] < -0.1  # up-current
     assert g.trajectory.points[-1] == pytest.approx([0.0, 0.0])
-    assert math.degrees(abs(g.approach_crab)) == pytest.approx(2.5)
+    assert math.degrees(abs(g.approach_crab)) == pytest.approx(1.5)  # 0.3 x the 5 deg tolerance
     near = g.update(VesselState(3.0, -0.3, math.pi, 3.0), 19.0)
     assert abs(math.degrees(angle_diff(near.heading, math.pi))) <= 4.5 + 1e-9
     calm = CompensatedAVLOS(traj, DisturbancePredictor(otter(), Environment()), 8.0)
-    assert calm.approach_segment is None  # nothing to bend for
+    calm.update(VesselState(25.0, 0.0, math.pi, 3.0), 12.0)
+    assert calm.bend_decided and calm.approach_segment is None  # nothing to bend for
+    refused = CompensatedAVLOS(traj, DisturbancePredictor(otter(), env), 8.0,
+                               path_check=lambda bent: False)
+    refused.update(VesselState(25.0, 0.0, math.pi, 3.0), 12.0)
+    assert refused.bend_rejected and len(refused.trajectory.points) == 2  # plan kept

@@ -98,9 +98,13 @@ def test_goal_inside_an_inflated_obstacle():
     assert "goal: (0, 0) lies inside obstacles[4] inflated to R_l = 3.2 m" in error_of(data)
 
 
-def test_recovery_goal_is_the_ramp_end_and_start_is_out_to_sea():
+def test_recovery_goal_is_the_ramp_end_and_start_may_lie_anywhere_else():
     assert "goal: a recovery ends at the ramp end (0, 0)" in error_of(with_change("goal.x", 5.0))
-    assert "start.x: a recovery starts out to sea" in error_of(with_change("start.x", -3.0))
+    assert parse_scenario(with_change("start.x", -3.0)).start.x == -3.0  # behind the ramp
+    data = with_change("start.x", 0.5)
+    data["start"]["y"] = 0.0
+    data["obstacles"] = []
+    assert "goal: must lie at least 1 m from the start" in error_of(data)
 
 
 def test_nan_is_refused():

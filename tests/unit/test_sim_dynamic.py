@@ -68,19 +68,51 @@ def test_hold_keeps_station_and_resume_completes(mission):
         v.step(0.2)
     v.hold()
     x0, y0 = v.state.x, v.state.y
-    while v.state.speed >= 0.3:  # coasts to rest
+    for _ in range(150):  # 30 s to stop and come back to where HOLD came
         v.step(0.2)
-        assert v.state.thrust_left == 0.0 and v.state.thrust_right == 0.0
-    xs, ys = v.state.x, v.state.y
-    assert math.hypot(xs - x0, ys - y0) < 15.0
-    for _ in range(200):  # then 40 s of holding where it stopped
+    for _ in range(300):  # then 60 s of holding there
         v.step(0.2)
-        assert math.hypot(v.state.x - xs, v.state.y - ys) < HOLD_RADIUS + 1.0
+        assert math.hypot(v.state.x - x0, v.state.y - y0) < 2.0
     assert not v.state.mission_complete and v.phase == "hold"
     v.resume()
     while not v.state.mission_complete and v.state.t < 300:
         v.step(0.2)
     assert v.state.mission_complete and math.hypot(v.state.x, v.state.y) < 2.0
+
+
+@pytest.mark.parametrize("current", [0.5, 1.0])
+def test_hold_keeps_station_in_a_current_for_three_minutes(current):
+    """HOLD is position over ground: in a current the boat must push, not rest (issue 13)."""
+    env = Environment.with_current(current, math.pi / 2)
+    v = DynamicVehicle(40.0, 0.0, math.pi, speed=1.5, env=env)
+    v.hold()
+    for _ in range(300):  # 60 s to turn into the current and settle
+        v.step(0.2)
+    worst = 0.0
+    for _ in range(900):  # 180 s of boat time
+        v.step(0.2)
+        worst = max(worst, math.hypot(v.state.x - 40.0, v.state.y))
+    assert worst <= 2.0
+    assert v.notice is None
+    # The boat weathervanes: bow into the current (which flows to +y).
+    assert abs(math.remainder(v.state.heading + math.pi / 2, 2 * math.pi)) < math.radians(10)
+
+
+def test_hold_reports_a_current_beyond_its_capacity():
+    env = Environment.with_current(3.5, math.pi / 2)  # more than the Otter's 3.09 m/s
+    v = DynamicVehicle(40.0, 0.0, math.pi, env=env)
+    v.hold()
+    for _ in range(300):
+        v.step(0.2)
+    assert v.notice == "current exceeds what the boat can hold: drifting"
+    assert math.hypot(v.state.x - 40.0, v.state.y) > 10.0
+
+
+def test_guidance_and_controller_are_selectable():
+    with pytest.raises(ValueError, match="guidance: unknown method 'pure'; available: avlos_comp"):
+        DynamicVehicle(0.0, 0.0, 0.0, guidance="pure")
+    with pytest.raises(ValueError, match="controller: unknown 'lqr'; available: pid, pid_mrac"):
+        DynamicVehicle(0.0, 0.0, 0.0, controller="lqr")
 
 
 def test_guided_mode_and_abort(mission):
@@ -101,3 +133,18 @@ def test_guided_mode_and_abort(mission):
     assert v.state.thrust_left == 0.0 and v.state.thrust_right == 0.0
     v.start()  # nothing to start after an abort
     assert v.phase == "aborted"
+
+
+def test_the_boat_tells_the_station_when_the_current_is_beyond_hold():
+    from usvstation.geo import RampFrame
+    from usvstation.sim.boat import BoatProtocol
+    from usvstation.sim.runner import make_boat
+
+    env = Environment.with_current(3.5, math.pi / 2)
+    vehicle = DynamicVehicle(40.0, 0.0, math.pi, env=env)
+    boat: BoatProtocol = make_boat(RampFrame(30.5, 114.4, 90.0), vehicle=vehicle)
+    now = boat.last_now
+    for k in range(1, 300):  # 60 s of boat time, on the boat's own clock
+        boat.update(now + 0.2 * k)
+    warnings = [line for line in boat.log if "current exceeds what the boat can hold" in line]
+    assert warnings == ["current exceeds what the boat can hold: drifting"]  # one STATUSTEXT

@@ -34,7 +34,12 @@ from usvstation.api.world import router as world_router
 from usvstation.scenario import Scenario
 from usvstation.services.boat import BoatError
 from usvstation.services.export import FORMATS, export_chunks, planned_route
-from usvstation.services.plans import PlanNotCancellable, PlanQueueFull, outdated_by
+from usvstation.services.plans import (
+    PlanNotCancellable,
+    PlanQueueFull,
+    outdated_by,
+    scenario_from_boat,
+)
 from usvstation.station import Station
 
 Auth = [Depends(require_operator)]  # changes and commands
@@ -148,6 +153,10 @@ class PlanRequest(BaseModel):
     scenario: Scenario | None = None
     planner: Literal["iga"] = "iga"
     seed: int | None = Field(None, ge=0, le=2**31 - 1)
+    from_boat: bool = Field(
+        False, description="plan from the boat's latest telemetry (position, heading, speed), "
+        "obstacles propagated to that instant of the running mission",
+    )
 
 
 class Accepted(BaseModel):
@@ -232,6 +241,13 @@ def create_app(station: Station) -> FastAPI:
     async def post_plan(req: PlanRequest | None = None) -> Accepted:
         req = req or PlanRequest()
         scenario = req.scenario or await station.working_scenario()
+        if req.from_boat:
+            try:
+                handler = station.boat.handler
+                scenario = scenario_from_boat(scenario, handler and handler.telemetry,
+                                              handler and handler.run_t0)
+            except ValueError as exc:
+                raise HTTPException(409, detail=str(exc)) from None
         try:
             job = await station.plans.submit(scenario, req.planner, req.seed)
         except PlanQueueFull as exc:

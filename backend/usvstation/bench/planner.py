@@ -7,6 +7,7 @@ with like on a machine whose absolute speed drifts.
 from __future__ import annotations
 
 import datetime as dt
+import itertools
 import os
 import platform
 import statistics
@@ -17,16 +18,30 @@ from typing import Any
 
 import numpy as np
 
+from usvstation.bench.checker import check_plan
 from usvstation.bench.deap_baseline import run_deap
-from usvstation.bench.scenarios import random_recovery, random_transit
+from usvstation.bench.pymoo_baseline import run_pymoo
+from usvstation.bench.scenarios import (
+    HIDDEN_FAMILIES,
+    crossing_ships,
+    dense_field,
+    random_recovery,
+    random_transit,
+)
 from usvstation.planning.encoding import GeneLayout
 from usvstation.planning.fitness import Evaluator
 from usvstation.planning.iga import _foundation, run_iga
 from usvstation.planning.options import IGAOptions
-from usvstation.planning.plan import NoFeasiblePlan, plan_scenario
+from usvstation.planning.plan import NoFeasiblePlan, plan_scenario, replan_from
 from usvstation.planning.problem import Problem
 from usvstation.planning.validate import plan_violations
-from usvstation.scenario import Scenario, bundled_scenario_dir, load_scenario
+from usvstation.scenario import (
+    Scenario,
+    bundled_scenario_dir,
+    load_scenario,
+    parse_scenario,
+    scenario_at,
+)
 
 TERMS = ("fitness", "fit_d", "fit_t", "fit_ang", "fit_mal")
 Progress = Callable[[str], None]
@@ -47,7 +62,7 @@ def run_planner_bench(
         "machine": machine_info(),
         "scenarios": [],
         "ablation": {"seeds": ablation_seeds},
-        "baseline": {"library": "deap", "seeds": deap_seeds, "max_generations": deap_max,
+        "baseline": {"library": "deap and pymoo", "seeds": deap_seeds, "max_generations": deap_max,
                      "runs": []},
     }
     ablation_rows = []
@@ -56,14 +71,177 @@ def run_planner_bench(
         out["scenarios"].append(bench_scenario(scenario, seed_list))
         progress(f"ablations EG1-EG4 on {scenario.name}")
         ablation_rows.append(bench_ablations(scenario, ablation_seeds))
-        progress(f"DEAP baseline on {scenario.name}")
+        progress(f"DEAP and pymoo baselines on {scenario.name}")
         out["baseline"]["runs"].extend(bench_deap(scenario, deap_seeds, deap_max))
     out["ablation"].update(ablation_tables(ablation_rows))
     out["baseline"]["summary"] = baseline_summary(out["baseline"]["runs"])
     if random_count > 0:
         progress(f"validity on {random_count} random recoveries and transits")
         out["random"] = bench_random(random_count, max(2, random_count // 10))
+    per_family = 1 if quick else 20
+    progress(f"hidden families, {per_family} scenarios each")
+    out["hidden"] = bench_hidden(per_family)
+    progress("re-planning from a boat under way")
+    out["replan"] = bench_replan(scenarios, 2 if quick else 20)
+    progress("scaling with the obstacle count")
+    out["scaling"] = bench_scaling([0, 40] if quick else [0, 40, 160, 320, 1000],
+                                   1 if quick else 3)
+    progress("robustness to running early or late")
+    out["robustness"] = bench_robustness(2 if quick else 20)
+    out["orderings"] = paper_orderings(out)
     return out
+
+
+def bench_hidden(count: int) -> dict[str, Any]:
+    """Each hidden family: share planned and valid by the independent checker (bench/checker.py);
+    plans returned but refused by it (must be 0); |min_clearance_m - checker| at most."""
+    out = {}
+    for name, make in HIDDEN_FAMILIES.items():
+        times, valid, refused, failures, diff = [], 0, [], [], 0.0
+        for i in range(count):
+            scenario = make(i)
+            t, plan = timed_plan(scenario, 1)
+            times.append(t)
+            if plan is None:
+                failures.append(scenario.name)
+                continue
+            rep = check_plan(plan, scenario)
+            if rep.ok:
+                valid += 1
+            else:
+                refused.append(f"{scenario.name}: {rep.problems[0]}")
+            if rep.clearance_m is not None and plan["metrics"]["min_clearance_m"] is not None:
+                diff = max(diff, abs(rep.clearance_m - plan["metrics"]["min_clearance_m"]))
+        out[name] = {
+            "count": count, "planned_valid": valid, "share": round(valid / count, 4),
+            "returned_but_refused": refused, "not_planned": failures,
+            "clearance_diff_max_m": round(diff, 4),
+            "plan_time_ms_median": round(1000 * statistics.median(times), 2),
+            "plan_time_ms_max": round(1000 * max(times), 2),
+        }
+    return out
+
+
+def boat_state_at(plan: dict[str, Any], t: float) -> tuple[float, float, float, float]:
+    """(x, y, heading_deg, speed) of a boat following the plan at time t (linear in time)."""
+    wps = plan["waypoints"]
+    for a, b in itertools.pairwise(wps):
+        if a["t"] <= t <= b["t"]:
+            s = (t - a["t"]) / (b["t"] - a["t"])
+            return (a["x"] + s * (b["x"] - a["x"]), a["y"] + s * (b["y"] - a["y"]),
+                    a["heading_deg"], a["speed"] + s * (b["speed"] - a["speed"]))
+    w = wps[-1]
+    return w["x"], w["y"], w["heading_deg"], w["speed"]
+
+
+def bench_replan(scenarios: list[Scenario], instants: int) -> dict[str, Any]:
+    """Plan from a boat under way at random instants of each public plan (seed 1)."""
+    rng = np.random.default_rng(7)
+    times, valid, tried, failures = [], 0, 0, []
+    for scenario in scenarios:
+        plan = plan_scenario(scenario, seed=1)
+        duration = plan["waypoints"][-1]["t"]
+        for t in rng.uniform(0.0, 0.8 * duration, size=instants):
+            x, y, h, v = boat_state_at(plan, float(t))
+            tried += 1
+            t0 = time.perf_counter()
+            try:
+                again = replan_from(scenario, x, y, h, v, float(t), seed=1)
+            except (NoFeasiblePlan, ValueError) as exc:
+                times.append(time.perf_counter() - t0)
+                failures.append(f"{scenario.name} t={t:.1f}: {str(exc)[:100]}")
+                continue
+            times.append(time.perf_counter() - t0)
+            valid += not plan_violations(again, _moved(scenario, x, y, h, v, float(t)))
+    return {
+        "instants": tried, "valid": valid,
+        "p50_ms": round(1000 * float(np.percentile(times, 50)), 2),
+        "p99_ms": round(1000 * float(np.percentile(times, 99)), 2),
+        "failures": failures,
+    }
+
+
+def _moved(scenario: Scenario, x: float, y: float, h: float, v: float, t: float) -> Scenario:
+    return scenario_at(scenario, x, y, h, v, t)
+
+
+def bench_scaling(counts: list[int], seeds: int) -> dict[str, Any]:
+    """Median plan time (ms) and share planned validly against the obstacle count (dense
+    fields of bench/scenarios.py, 300 m x 300 m)."""
+    out = {}
+    for n in counts:
+        times, valid = [], 0
+        for s in range(seeds):
+            scenario = dense_field(s, count=n)
+            t, plan = timed_plan(scenario, 1)
+            times.append(t)
+            valid += plan is not None and check_plan(plan, scenario).ok
+        out[str(n)] = {"plan_time_ms_median": round(1000 * statistics.median(times), 2),
+                       "valid": valid, "seeds": seeds}
+    return out
+
+
+def bench_robustness(count: int) -> dict[str, Any]:
+    """Share of plans against crossing, head-on and overtaking ships whose hull stays clear
+    when the boat runs early or late by up to 3 s and up to 10 s: planned without a timing
+    margin (before) and with the default 3 s margin (after)."""
+    out = {}
+    for label, margin in (("before", 0.0), ("after", 3.0)):
+        clear3 = clear10 = planned = 0
+        for i in range(count):
+            data = crossing_ships(i).model_dump()
+            data["vessel"]["time_margin_s"] = margin
+            scenario = parse_scenario(data)
+            _, plan = timed_plan(scenario, 1)
+            if plan is None:
+                continue
+            planned += 1
+            clear3 += check_plan(plan, scenario, time_margin_s=3.0).ok
+            clear10 += check_plan(plan, scenario, time_margin_s=10.0).ok
+        out[label] = {"time_margin_s": margin, "planned": planned, "count": count,
+                      "clear_within_3s": clear3, "clear_within_10s": clear10,
+                      "share_3s": round(clear3 / max(planned, 1), 4),
+                      "share_10s": round(clear10 / max(planned, 1), 4)}
+    return out
+
+
+def paper_orderings(r: dict[str, Any]) -> list[dict[str, Any]]:
+    """Which of paper 000's orderings (Tables 2-4, Fig. 15) hold on this run, in words."""
+    rows = r["ablation"]["rows"]
+
+    def holds(pred: Any) -> tuple[int, int]:
+        ok = sum(1 for row in rows if _safe(pred, row))
+        return ok, len(rows)
+
+    checks = [
+        ("Table 2: the IGA turns less than EG3 (Fit_ang IGA < EG3)",
+         lambda w: w["fit_ang_iga"] < w["fit_ang_eg3"]),
+        ("Table 2: the IGA keeps closer to the ramp axis than EG3 (Fit_mal IGA < EG3)",
+         lambda w: w["fit_mal_iga"] < w["fit_mal_eg3"]),
+        ("Table 3: the IGA reaches its fitness faster than EG2 (no SSIH)",
+         lambda w: w["to_target_time_iga_s"] < w["to_target_time_eg2_s"]),
+        ("Table 3: the IGA reaches its fitness faster than EG4 (no elite group)",
+         lambda w: w["to_target_time_iga_s"] < w["to_target_time_eg4_s"]),
+        ("Table 4: the IGA's fitness is at least EG2's and EG4's",
+         lambda w: w["fitness_iga"] >= max(w["fitness_eg2"], w["fitness_eg4"])),
+        ("Fig. 15: preheating starts from a fitter elite group than EG1",
+         lambda w: w["elite_initial_iga"] > (w["elite_initial_eg1"] or 0.0)),
+        ("Fig. 15: the IGA ends fitter than EG1",
+         lambda w: w["fitness_iga"] > (w["fitness_eg1"] or 0.0)),
+    ]
+    out = []
+    for text, pred in checks:
+        ok, n = holds(pred)
+        verdict = "holds" if ok == n else ("does not hold" if ok == 0 else "holds in part")
+        out.append({"ordering": text, "cases_holding": ok, "cases": n, "verdict": verdict})
+    return out
+
+
+def _safe(pred: Any, row: dict[str, Any]) -> bool:
+    try:
+        return bool(pred(row))
+    except TypeError:  # a term missing because no plan was found
+        return False
 
 
 def load_folder(folder: Path) -> list[Scenario]:
@@ -191,11 +369,13 @@ def bench_deap(scenario: Scenario, seeds: list[int], max_generations: int) -> li
         result = run_iga(problem, opts, layout)
         target = float(result.evaluation.fitness[0])
         levels, _, _ = _foundation(layout, problem, opts, np.random.default_rng(seed))
-        for init, bits in (("random", None), ("preheated", layout.encode(levels))):
-            run = run_deap(layout, evaluator, population=opts.population, seed=seed,
-                           target=target, max_generations=max_generations, initial_bits=bits)
+        for (lib, runner), (init, bits) in itertools.product(
+                (("deap", run_deap), ("pymoo", run_pymoo)),
+                (("random", None), ("preheated", layout.encode(levels)))):
+            run = runner(layout, evaluator, population=opts.population, seed=seed,
+                         target=target, max_generations=max_generations, initial_bits=bits)
             rows.append({
-                "scenario": scenario.name, "seed": seed, "deap_init": init,
+                "scenario": scenario.name, "seed": seed, "library": lib, "deap_init": init,
                 "iga_time_s": round(result.elapsed_s, 4), "iga_fitness": round(target, 4),
                 "iga_generations": result.generations,
                 "deap_time_s": round(run.elapsed_s, 4), "deap_fitness": round(run.best_fitness, 4),
@@ -208,10 +388,10 @@ def bench_deap(scenario: Scenario, seeds: list[int], max_generations: int) -> li
 
 def baseline_summary(rows: list[dict[str, Any]]) -> dict[str, Any]:
     summary = {}
-    for init in ("random", "preheated"):
-        sel = [r for r in rows if r["deap_init"] == init]
+    for lib, init in itertools.product(("deap", "pymoo"), ("random", "preheated")):
+        sel = [r for r in rows if r["deap_init"] == init and r.get("library", "deap") == lib]
         if sel:
-            summary[init] = {
+            summary[f"{lib}_{init}"] = {
                 "time_ratio_median": statistics.median(r["time_ratio"] for r in sel),
                 "time_ratio_min": min(r["time_ratio"] for r in sel),
                 "fitness_ratio_max": max(r["fitness_ratio"] or 0.0 for r in sel),
@@ -301,12 +481,13 @@ def render_markdown(r: dict[str, Any]) -> str:
     b = r["baseline"]
     lines += ["", f"General GA library baseline ({b['library']}, same encoding and fitness, "
               f"until the IGA's fitness or {b['max_generations']} generations):", "",
-              "| scenario | seed | DEAP init | IGA time (s) | DEAP time (s) | time ratio | "
-              "IGA fitness | DEAP fitness | fitness ratio | DEAP gens |",
-              "|---|---|---|---|---|---|---|---|---|---|"]
+              "| scenario | seed | library | init | IGA time (s) | library time (s) | time ratio | "
+              "IGA fitness | library fitness | fitness ratio | library gens |",
+              "|---|---|---|---|---|---|---|---|---|---|---|"]
     for x in b["runs"]:
         lines.append(
-            f"| {x['scenario']} | {x['seed']} | {x['deap_init']} | {x['iga_time_s']} | "
+            f"| {x['scenario']} | {x['seed']} | {x.get('library', 'deap')} | {x['deap_init']} | "
+            f"{x['iga_time_s']} | "
             f"{x['deap_time_s']} | {x['time_ratio']} | {x['iga_fitness']} | {x['deap_fitness']} | "
             f"{x['fitness_ratio']} | {x['deap_generations']} |")
     if "random" in r:
@@ -316,4 +497,39 @@ def render_markdown(r: dict[str, Any]) -> str:
         for kind, x in r["random"].items():
             lines.append(f"| {kind} | {x['valid']}/{x['count']} | {x['plan_time_ms_median']} | "
                          f"{x['plan_time_ms_p90']} | {', '.join(x['failures']) or '-'} |")
+    lines += _issue12_markdown(r)
     return "\n".join(lines) + "\n"
+
+
+def _issue12_markdown(r: dict[str, Any]) -> list[str]:
+    lines: list[str] = []
+    if "hidden" in r:
+        lines += ["", "Hidden families (seed 1; valid = passes the independent checker "
+                  "bench/checker.py: hull clearance, first turn, speed through the water, "
+                  "timing margin):", "",
+                  "| family | planned and valid | returned but refused | clearance diff max (m) | "
+                  "median (ms) | max (ms) |", "|---|---|---|---|---|---|"]
+        for name, x in r["hidden"].items():
+            lines.append(f"| {name} | {x['planned_valid']}/{x['count']} | "
+                         f"{len(x['returned_but_refused'])} | {x['clearance_diff_max_m']} | "
+                         f"{x['plan_time_ms_median']} | {x['plan_time_ms_max']} |")
+    if "replan" in r:
+        x = r["replan"]
+        lines += ["", f"Re-plan from a boat under way: {x['valid']}/{x['instants']} valid, "
+                  f"p50 {x['p50_ms']} ms, p99 {x['p99_ms']} ms."]
+    if "scaling" in r:
+        lines += ["", "| obstacles | median plan time (ms) | valid |", "|---|---|---|"]
+        for n, x in r["scaling"].items():
+            lines.append(f"| {n} | {x['plan_time_ms_median']} | {x['valid']}/{x['seeds']} |")
+    if "robustness" in r:
+        lines += ["", "| crossing ships | timing margin (s) | planned | clear when <= 3 s off | "
+                  "clear when <= 10 s off |", "|---|---|---|---|---|"]
+        for label, x in r["robustness"].items():
+            lines.append(f"| {label} | {x['time_margin_s']} | {x['planned']}/{x['count']} | "
+                         f"{x['share_3s']} | {x['share_10s']} |")
+    if "orderings" in r:
+        lines += ["", "Paper 000's orderings on this run:", ""]
+        for x in r["orderings"]:
+            lines.append(f"- {x['ordering']}: {x['verdict']} "
+                         f"({x['cases_holding']}/{x['cases']} cases).")
+    return lines

@@ -112,3 +112,130 @@ def _environment(rng: np.random.Generator) -> dict:
             "current_dir_deg": round(rng.uniform(0.0, 360.0), 1),
             "wind_speed": round(rng.uniform(0.0, 8.0), 1),
             "wind_dir_deg": round(rng.uniform(0.0, 360.0), 1)}
+
+
+# --- hidden families (issue 12): the kinds of scenario the planner was stress-tested on -------
+
+def pointing_away(seed: int) -> Scenario:
+    """A random recovery whose boat points away from the ramp (90-180 deg off), under way."""
+    rng = np.random.default_rng(10_000 + seed)
+    data = random_recovery(seed).model_dump()
+    s = data["start"]
+    bearing = math.degrees(math.atan2(-s["y"], -s["x"]))
+    off = rng.uniform(90.0, 180.0) * rng.choice([-1.0, 1.0])
+    s["heading_deg"] = round((bearing + off) % 360.0, 2)
+    s["speed"] = round(rng.uniform(1.0, 2.5), 2)
+    data["name"] = f"pointing-away-{seed}"
+    return parse_scenario(data)
+
+
+def strong_current(seed: int) -> Scenario:
+    """A random recovery in a current of 0.5-1 m/s from any direction."""
+    rng = np.random.default_rng(20_000 + seed)
+    data = random_recovery(seed).model_dump()
+    data["environment"]["current_speed"] = round(rng.uniform(0.5, 1.0), 3)
+    data["environment"]["current_dir_deg"] = round(rng.uniform(0.0, 360.0), 1)
+    data["name"] = f"strong-current-{seed}"
+    return parse_scenario(data)
+
+
+def crossing_ships(seed: int) -> Scenario:
+    """A recovery with 1-3 ships at 1.5-3x the boat's top speed crossing, meeting head-on or
+    overtaking near the direct line, timed to be there around when the boat is."""
+    rng = np.random.default_rng(30_000 + seed)
+    vessel = Vessel()
+    dist = rng.uniform(60.0, 140.0)
+    bearing = math.radians(rng.uniform(-30.0, 30.0))
+    sx, sy = dist * math.cos(bearing), dist * math.sin(bearing)
+    obstacles = []
+    for _ in range(int(rng.integers(1, 4))):
+        frac = rng.uniform(0.25, 0.85)
+        px, py = sx * frac, sy * frac
+        t_meet = (1 - frac) * dist / 1.5 + rng.uniform(-8.0, 8.0)  # boat at about 1.5 m/s
+        kind = rng.choice(["crossing", "head-on", "overtaking"])
+        route = math.atan2(-sy, -sx)
+        course = {"crossing": route + math.pi / 2 * rng.choice([-1.0, 1.0]),
+                  "head-on": route + math.pi, "overtaking": route}[kind]
+        course += math.radians(rng.uniform(-20.0, 20.0))
+        speed = rng.uniform(1.5, 3.0) * vessel.speed_max
+        vx, vy = speed * math.cos(course), speed * math.sin(course)
+        obstacles.append({"x": round(px - vx * max(t_meet, 1.0), 2),
+                          "y": round(py - vy * max(t_meet, 1.0), 2),
+                          "radius": round(rng.uniform(2.0, 5.0), 2),
+                          "vx": round(vx, 3), "vy": round(vy, 3)})
+    obstacles = _clear_of(obstacles, [(sx, sy), (0.0, 0.0)], vessel)
+    return parse_scenario({
+        "name": f"crossing-ships-{seed}", "origin": _ORIGIN,
+        "start": {"x": round(sx, 2), "y": round(sy, 2),
+                  "heading_deg": round(math.degrees(math.atan2(-sy, -sx)) % 360, 2),
+                  "speed": 1.0},
+        "obstacles": obstacles, "vessel": vessel.model_dump(),
+        "environment": _environment(rng),
+    })
+
+
+def behind_ramp(seed: int) -> Scenario:
+    """A recovery starting behind the ramp (x < 0, off to a side) or beside it (x < 5 m)."""
+    rng = np.random.default_rng(40_000 + seed)
+    vessel = Vessel()
+    sx = rng.uniform(-40.0, 5.0)
+    sy = rng.uniform(10.0, 60.0) * rng.choice([-1.0, 1.0])
+    moving = rng.random() < 0.5
+    return parse_scenario({
+        "name": f"behind-ramp-{seed}", "origin": _ORIGIN,
+        "start": {"x": round(sx, 2), "y": round(sy, 2),
+                  "heading_deg": round(rng.uniform(0.0, 360.0), 1),
+                  "speed": round(rng.uniform(0.5, 2.0), 2) if moving else 0.0},
+        "obstacles": [], "vessel": vessel.model_dump(), "environment": _environment(rng),
+    })
+
+
+def long_wall(seed: int) -> Scenario:
+    """A recovery behind a wall of touching circles 100-250 m long across the approach."""
+    rng = np.random.default_rng(50_000 + seed)
+    vessel = Vessel()
+    sx, sy = rng.uniform(80.0, 140.0), rng.uniform(-20.0, 20.0)
+    wx = rng.uniform(0.35, 0.65) * sx
+    length = rng.uniform(100.0, 250.0)
+    centre = rng.uniform(-0.3, 0.3) * length
+    r = 2.0
+    ys = np.arange(centre - length / 2, centre + length / 2 + 1e-9, 1.5 * r)
+    obstacles = [{"x": round(wx, 2), "y": round(float(y), 2), "radius": r} for y in ys]
+    obstacles = _clear_of(obstacles, [(sx, sy), (0.0, 0.0)], vessel)
+    return parse_scenario({
+        "name": f"long-wall-{seed}", "origin": _ORIGIN,
+        "start": {"x": round(sx, 2), "y": round(sy, 2), "heading_deg": 180.0, "speed": 1.0},
+        "obstacles": obstacles, "vessel": vessel.model_dump(), "environment": _environment(rng),
+    })
+
+
+def dense_field(seed: int, count: int = 500) -> Scenario:
+    """A recovery through `count` small obstacles (a tenth of them drifting) over 300 x 300 m."""
+    rng = np.random.default_rng(60_000 + seed)
+    vessel = Vessel()
+    sx, sy = rng.uniform(100.0, 150.0), rng.uniform(-30.0, 30.0)
+    obstacles = []
+    for _ in range(count):
+        moving = rng.random() < 0.1
+        speed, course = (rng.uniform(0.1, 0.5), rng.uniform(0, 2 * math.pi)) if moving else (0, 0)
+        obstacles.append({"x": round(rng.uniform(10.0, 300.0), 2),
+                          "y": round(rng.uniform(-150.0, 150.0), 2),
+                          "radius": round(rng.uniform(0.3, 1.0), 2),
+                          "vx": round(speed * math.cos(course), 3),
+                          "vy": round(speed * math.sin(course), 3)})
+    obstacles = _clear_of(obstacles, [(sx, sy), (0.0, 0.0)], vessel)
+    return parse_scenario({
+        "name": f"dense-field-{seed}", "origin": _ORIGIN,
+        "start": {"x": round(sx, 2), "y": round(sy, 2), "heading_deg": 180.0, "speed": 1.0},
+        "obstacles": obstacles, "vessel": vessel.model_dump(), "environment": _environment(rng),
+    })
+
+
+HIDDEN_FAMILIES = {
+    "pointing_away": pointing_away,
+    "strong_current": strong_current,
+    "crossing_ships": crossing_ships,
+    "behind_ramp": behind_ramp,
+    "long_wall": long_wall,
+    "dense_field": dense_field,
+}

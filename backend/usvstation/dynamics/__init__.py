@@ -2,6 +2,7 @@
 
 from usvstation.dynamics.environment import (
     Environment,
+    Push,
     WaveField,
     Wind,
     current_force,
@@ -16,6 +17,7 @@ from usvstation.dynamics.vessel import ThrustCommand, Vessel, VesselState
 __all__ = [
     "Environment",
     "KinematicBoat",
+    "Push",
     "ThrustCommand",
     "Thrusters",
     "Vessel",

@@ -31,9 +31,13 @@ SEA_STATE_HEIGHTS = {
     7: (6.0, 9.0),
     8: (9.0, 14.0),
 }
-# Eq. 4's cubic fits are used up to this wavelength / length ratio and held there
-# beyond (they diverge for longer waves: W_y(2) = 19), see docs/tracking.md.
+# Eq. 4's cubic fits are used within wavelength / length ratios [0, 1], where all
+# three fall to within 0.1 of zero at 1 (W_x 0.09, W_y 0.08, W_n -0.01); past it
+# the cubics diverge (W_y(2) = 19) while real drift forces vanish for waves much
+# longer than the hull, so beyond the range the value at 1 decays as (1 / ratio)^2
+# (an assumption, documented in docs/tracking.md).
 MAX_FIT_RATIO = 1.0
+WAVELENGTH_MODELS = ("dispersion", "paper")
 
 
 @dataclass(frozen=True)
@@ -53,17 +57,25 @@ class WaveField:
             )
 
     @classmethod
-    def from_wind(cls, wind_speed: float, direction: float) -> WaveField:
-        """Waves raised by a wind of `wind_speed` m/s (paper 000 eq. 5)."""
+    def from_wind(cls, wind_speed: float, direction: float,
+                  wavelength: str = "dispersion") -> WaveField:
+        """Waves raised by a wind of `wind_speed` m/s (paper 000 eq. 5).
+
+        Height and period are eq. 5's. The wavelength comes from the deep-water
+        dispersion relation lambda = g T^2 / (2 pi) (= 1.56 T^2) by default;
+        `wavelength="paper"` keeps eq. 5's 0.54 T^2 (which gives 26.9 m where
+        dispersion gives 77.7 m for T = 7.06 s).
+        """
         if wind_speed < 0.0:
             raise ValueError(f"waves: wind speed must be >= 0 (got {wind_speed})")
         v = wind_speed
         height = 0.015 * v**2 + 1.5
         period = -0.001 * v**3 + 0.042 * v**2 + 5.6
-        return cls(height, period, 0.54 * period**2, direction)
+        return cls(height, period, wavelength_of(period, wavelength), direction)
 
     @classmethod
-    def from_sea_state(cls, code: int, direction: float) -> WaveField:
+    def from_sea_state(cls, code: int, direction: float,
+                       wavelength: str = "dispersion") -> WaveField:
         """Waves of WMO sea state `code`: the middle of its height band.
 
         Eq. 5 gives h_w >= 1.5 m at any wind (sea state 4 or more), so the
@@ -76,8 +88,18 @@ class WaveField:
         lo, hi = SEA_STATE_HEIGHTS[code]
         height = 0.5 * (lo + hi)
         wind = math.sqrt(GRAVITY * height / 0.21)
-        from_eq5 = cls.from_wind(wind, direction)
+        from_eq5 = cls.from_wind(wind, direction, wavelength)
         return cls(height, from_eq5.period, from_eq5.wavelength, direction)
+
+
+def wavelength_of(period: float, model: str = "dispersion") -> float:
+    """Wavelength (m) of waves of `period` s: deep-water dispersion, or eq. 5's 0.54 T^2."""
+    if model == "dispersion":
+        return GRAVITY * period**2 / (2.0 * math.pi)
+    if model == "paper":
+        return 0.54 * period**2
+    raise ValueError(
+        f"waves: unknown wavelength model {model!r}; available: {', '.join(WAVELENGTH_MODELS)}")
 
 
 @dataclass(frozen=True)
@@ -93,12 +115,39 @@ class Wind:
 
 
 @dataclass(frozen=True)
+class Push:
+    """A constant earth-frame force (N) on the hull inside a rectangle of the plane.
+
+    For disturbances papers give as forces (paper 004 Table 7: 1 N of wind,
+    15 N of waves in an area). Bounds default to the whole plane.
+    """
+
+    fx: float
+    fy: float
+    x_min: float = -math.inf
+    x_max: float = math.inf
+    y_min: float = -math.inf
+    y_max: float = math.inf
+
+    def __post_init__(self) -> None:
+        if not (math.isfinite(self.fx) and math.isfinite(self.fy)):
+            raise ValueError(f"push: force must be finite (got {self.fx}, {self.fy})")
+        if not (self.x_min < self.x_max and self.y_min < self.y_max):
+            raise ValueError("push: need x_min < x_max and y_min < y_max")
+
+    def at(self, x: float, y: float) -> tuple[float, float]:
+        inside = self.x_min <= x <= self.x_max and self.y_min <= y <= self.y_max
+        return (self.fx, self.fy) if inside else (0.0, 0.0)
+
+
+@dataclass(frozen=True)
 class Environment:
-    """What acts on the boat: a uniform current (earth-frame velocity), waves and wind."""
+    """What acts on the boat: a uniform current (earth-frame velocity), waves, wind and pushes."""
 
     current: tuple[float, float] = (0.0, 0.0)
     waves: WaveField | None = None
     wind: Wind | None = None
+    pushes: tuple[Push, ...] = ()
 
     @classmethod
     def with_current(
@@ -126,7 +175,17 @@ class Environment:
 
     @property
     def calm(self) -> bool:
-        return self.current == (0.0, 0.0) and self.waves is None and self.wind is None
+        return (self.current == (0.0, 0.0) and self.waves is None and self.wind is None
+                and not self.pushes)
+
+    def push_body(self, x: float, y: float, psi: float) -> tuple[float, float]:
+        """Sum of the pushes at (x, y) in the body frame (N, surge and sway)."""
+        fx = fy = 0.0
+        for p in self.pushes:
+            px, py = p.at(x, y)
+            fx, fy = fx + px, fy + py
+        c, s = math.cos(psi), math.sin(psi)
+        return c * fx + s * fy, -s * fx + c * fy
 
     def current_body(self, psi: float) -> tuple[float, float]:
         """Current velocity (u_c, v_c) in the body frame at heading psi."""
@@ -145,25 +204,34 @@ class Environment:
 
 
 def drift_coefficients(ratio: float) -> tuple[float, float, float]:
-    """Daidola's wave drift coefficients W_x, W_y, W_n at wavelength / length `ratio` (eq. 4)."""
+    """Daidola's wave drift coefficients W_x, W_y, W_n at wavelength / length `ratio` (eq. 4).
+
+    The cubics within [0, MAX_FIT_RATIO]; beyond, their value there times
+    (MAX_FIT_RATIO / ratio)^2 (long waves carry the hull, drift vanishes).
+    """
     q = min(max(ratio, 0.0), MAX_FIT_RATIO)
     wx = 0.05 - 0.2 * q + 0.75 * q**2 - 0.51 * q**3
     wy = 0.46 + 6.83 * q - 15.65 * q**2 + 8.44 * q**3
     wn = -0.11 + 0.68 * q - 0.79 * q**2 + 0.21 * q**3
+    if ratio > MAX_FIT_RATIO:
+        k = (MAX_FIT_RATIO / ratio) ** 2
+        wx, wy, wn = k * wx, k * wy, k * wn
     return wx, wy, wn
 
 
 def wave_drift_force(params: VesselParams, waves: WaveField, psi: float) -> np.ndarray:
     """Mean second-order wave drift force [X, Y, N] (paper 000 eq. 3-4).
 
-    chi is the encounter angle, the waves' direction of travel relative to the
-    bow (0: following seas). The yaw moment carries L^2 (eq. 3 prints L,
-    which is not a moment).
+    F = 1/2 rho g L xi^2 W(lambda / L): eq. 3 as printed has no g, which is
+    not a force (kg/s^2); Daidola's form carries rho g (Fossen 2021 sec.
+    10.2). chi is the encounter angle, the waves' direction of travel
+    relative to the bow (0: following seas). The yaw moment carries L^2
+    (eq. 3 prints L, which is not a moment).
     """
     chi = waves.direction - psi
     amplitude = 0.5 * waves.height
     wx, wy, wn = drift_coefficients(waves.wavelength / params.length)
-    q = 0.5 * RHO_WATER * params.length * amplitude**2
+    q = 0.5 * RHO_WATER * GRAVITY * params.length * amplitude**2
     return np.array([
         q * math.cos(chi) * wx,
         q * math.sin(chi) * wy,

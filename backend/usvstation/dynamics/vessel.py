@@ -154,6 +154,9 @@ class Vessel:
         tau = np.array([t_left + t_right, 0.0, th.lever_arm * (t_right - t_left)])
         if env.waves is not None or env.wind is not None:
             tau = tau + env.forces(p, psi, u, v)
+        if env.pushes:
+            bx, by = env.push_body(float(x[0]), float(x[1]), psi)
+            tau = tau + np.array([bx, by, 0.0])
         rhs = tau - p.coriolis(ur, vr, r) - p.damping(ur, vr, r)
         nu_r_dot = p.mass_matrix_inv @ rhs
         c, s = math.cos(psi), math.sin(psi)

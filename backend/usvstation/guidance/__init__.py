@@ -1,11 +1,19 @@
-"""LOS, AV-LOS and sliding-curve guidance on timed trajectories (pure, no I/O).
+"""LOS, AV-LOS, ILOS, ALOS and sliding-curve guidance, the drift observer and station
+keeping (pure, no I/O).
 
 Paper 000 sec. 3.3 (LOS, AV-LOS eq. 13), sec. 3.1 (disturbance compensation);
-paper 002 Table III (sliding curve). See docs/tracking.md.
+paper 002 Table III (sliding curve); Fossen and Lekkas 2017 (ILOS), Fossen 2023
+(ALOS). See docs/tracking.md.
 """
 
 from usvstation.guidance.angles import angle_diff, wrap_angle, wrap_angles
-from usvstation.guidance.compensation import CompensatedAVLOS, DisturbancePredictor
+from usvstation.guidance.compensation import (
+    CompensatedAVLOS,
+    DisturbancePredictor,
+    DriftModel,
+    EstimatedDrift,
+)
+from usvstation.guidance.integral_los import AdaptiveLOS, IntegralLOS
 from usvstation.guidance.los import (
     AVLOSGuidance,
     GuidanceCommand,
@@ -14,18 +22,27 @@ from usvstation.guidance.los import (
     avlos_speed,
     limit_correction,
 )
+from usvstation.guidance.observer import DriftObserver, Measurement
 from usvstation.guidance.sliding_curve import SlidingCurveGuidance
+from usvstation.guidance.station import StationKeeper
 from usvstation.guidance.trajectory import Schedule, Trajectory
 
 __all__ = [
     "AVLOSGuidance",
+    "AdaptiveLOS",
     "CompensatedAVLOS",
     "DisturbancePredictor",
+    "DriftModel",
+    "DriftObserver",
+    "EstimatedDrift",
     "GuidanceCommand",
+    "IntegralLOS",
     "LOSGuidance",
     "LookaheadTracker",
+    "Measurement",
     "Schedule",
     "SlidingCurveGuidance",
+    "StationKeeper",
     "Trajectory",
     "angle_diff",
     "avlos_speed",

@@ -50,6 +50,17 @@ class GuidanceCommand:
     target_time: float
     segment: int
     finished: bool = False
+    water_speed: float | None = None  # m/s through the water, when the guidance knows it
+
+
+def check_pose(pose: Pose, t: float) -> None:
+    """ValueError naming the field unless the pose and the time are finite numbers."""
+    for name in ("x", "y", "psi"):
+        value = getattr(pose, name)
+        if not math.isfinite(value):
+            raise ValueError(f"guidance: pose {name} must be finite (got {value})")
+    if not math.isfinite(t):
+        raise ValueError(f"guidance: time must be finite (got {t})")
 
 
 @dataclass(frozen=True)
@@ -78,6 +89,11 @@ class LookaheadTracker:
     def find(self, x: float, y: float) -> Lookahead:
         tr, radius = self.trajectory, self.radius
         last = tr.segment_count - 1
+        # Along-track switching: a boat past the end of its leg (measured along
+        # the leg) is on the next one, whether or not its circle reaches it.
+        # Without this a boat that overshoots a hairpin by more than R orbits.
+        while self.segment < last and self._along(self.segment, x, y) >= 1.0:
+            self.segment += 1
         best: tuple[int, float] | None = None
         j = self.segment
         while j <= last:
@@ -92,15 +108,32 @@ class LookaheadTracker:
                 best = (last, 1.0)
             j += 1
         if best is None:
+            # Off the path by more than R: aim R ahead of the nearest point, so
+            # the boat closes the path at an angle instead of circling a point.
             j = self.segment
             ax, ay, bx, by = tr.segment(j)
             s = project_on_segment(x, y, ax, ay, bx, by)
-            px, py = tr.point_at(j, s)
-            return Lookahead(j, s, px, py, math.hypot(px - x, py - y), False)
+            seg, frac = tr.locate_arc(tr.arc_at(j, s) + radius)
+            px, py = tr.point_at(seg, frac)
+            return Lookahead(seg, frac, px, py, math.hypot(px - x, py - y), False)
         j, s = best
         self.segment = j
         px, py = tr.point_at(j, s)
         return Lookahead(j, s, px, py, math.hypot(px - x, py - y), True)
+
+    def _along(self, j: int, x: float, y: float) -> float:
+        """Unclamped along-track fraction of (x, y) on segment j."""
+        ax, ay, bx, by = self.trajectory.segment(j)
+        dx, dy = bx - ax, by - ay
+        a = dx * dx + dy * dy
+        if a == 0.0:
+            return 1.0
+        return ((x - ax) * dx + (y - ay) * dy) / a
+
+    def past_end(self, x: float, y: float) -> bool:
+        """True once (x, y) is past the end of the last segment, measured along it."""
+        last = self.trajectory.segment_count - 1
+        return self.segment == last and self._along(last, x, y) >= 1.0
 
 
 class _LineOfSight:
@@ -124,13 +157,17 @@ class _LineOfSight:
     def lookahead(self) -> float:
         return self.tracker.radius
 
-    def _look(self, pose: Pose) -> tuple[Lookahead, float, float]:
+    def _look(self, pose: Pose, t: float = 0.0) -> tuple[Lookahead, float, float]:
+        check_pose(pose, t)
         la = self.tracker.find(pose.x, pose.y)
         tr = self.trajectory
         at_end = la.segment == tr.segment_count - 1 and la.fraction >= 1.0
-        if at_end and la.distance <= self.arrive_radius:
+        if (at_end and la.distance <= self.arrive_radius) or self.tracker.past_end(pose.x, pose.y):
             self.finished = True
-        heading = math.atan2(la.y - pose.y, la.x - pose.x) if la.distance > 1e-9 else pose.psi
+        if self.finished:  # past the last waypoint: hold the last bearing
+            heading = tr.arrival_heading
+        else:
+            heading = math.atan2(la.y - pose.y, la.x - pose.x) if la.distance > 1e-9 else pose.psi
         return la, heading, tr.time_at(la.segment, la.fraction)
 
     def _command(self, la: Lookahead, heading: float, speed: float, t_la: float) -> GuidanceCommand:
@@ -148,7 +185,7 @@ class LOSGuidance(_LineOfSight):
         super().__init__(trajectory, lookahead, speed_max, arrive_radius, overrun)
 
     def update(self, pose: Pose, t: float) -> GuidanceCommand:
-        la, heading, t_la = self._look(pose)
+        la, heading, t_la = self._look(pose, t)
         return self._command(la, heading, self.trajectory.speed_at(t), t_la)
 
 
@@ -200,7 +237,7 @@ class AVLOSGuidance(_LineOfSight):
 
     def velocity(self, pose: Pose, t: float) -> tuple[Lookahead, float, float, float]:
         """(look-ahead, heading, AV-LOS speed, look-ahead due time) at time t."""
-        la, heading, _ = self._look(pose)
+        la, heading, _ = self._look(pose, t)
         t_la = self.schedule.time_at_arc(self.trajectory.arc_at(la.segment, la.fraction))
         dt = t_la - t
         speed = avlos_speed(la.distance, dt, self.speed_max, self.speed_min)

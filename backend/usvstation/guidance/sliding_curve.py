@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import math
 
-from usvstation.guidance.los import GuidanceCommand, Pose
+from usvstation.guidance.los import GuidanceCommand, Pose, check_pose
 from usvstation.guidance.trajectory import Trajectory
 
 
@@ -49,6 +49,7 @@ class SlidingCurveGuidance:
         return r_u * math.cos(theta - theta_u)
 
     def update(self, pose: Pose, t: float) -> GuidanceCommand:
+        check_pose(pose, t)
         tr = self.trajectory
         along = self._projection(pose.x, pose.y)
         while self.leg < tr.segment_count - 1 and along >= tr.segment_length(self.leg):
@@ -59,11 +60,16 @@ class SlidingCurveGuidance:
         sx, sy = tr.point_at(seg, frac)
         t_target = tr.time_at(seg, frac)
         end_x, end_y = tr.points[-1]
-        if (seg == tr.segment_count - 1 and frac >= 1.0
+        last = tr.segment_count - 1
+        if (seg == last and frac >= 1.0
                 and math.hypot(end_x - pose.x, end_y - pose.y) <= self.arrive_radius):
             self.finished = True
+        if self.leg == last and along >= tr.segment_length(last):
+            self.finished = True  # past the last waypoint
         dist = math.hypot(sx - pose.x, sy - pose.y)
         heading = math.atan2(sy - pose.y, sx - pose.x) if dist > 1e-9 else pose.psi
+        if self.finished:
+            heading = tr.arrival_heading  # hold the last bearing
         if self.finished:
             return GuidanceCommand(heading, 0.0, (sx, sy), t_target, seg, True)
         speed = min(max(tr.speed_at(t), 0.0), self.speed_max)

@@ -173,21 +173,31 @@ class Trajectory:
     def replace_tail(self, from_arc: float, via: tuple[float, float]) -> Trajectory:
         """The path up to `from_arc` metres before the end, then straight to `via`, then the end.
 
-        `via` takes the scheduled time of the point it replaces; used to bend
-        the final approach (see CompensatedAVLOS).
+        Only the last `from_arc` metres change: the point P of the path that
+        far from the end is kept (at its scheduled time) and the path runs
+        P -> via -> end, `via` timed in proportion to the distance along the
+        new tail. Used to bend the final approach (see CompensatedAVLOS).
         """
         total = self.length
         arc = total - from_arc
         if not 0.0 < arc < total:
             raise ValueError(f"trajectory: tail length must be within (0, {total:g}) m")
+        if not (math.isfinite(via[0]) and math.isfinite(via[1])):
+            raise ValueError(f"trajectory: via point must be finite (got {via})")
         i, s = self.locate_arc(arc)
-        t_via = self.time_at(i, s)
-        keep = i + 1 if s > 0.0 else i
-        pts = np.vstack([self.points[:keep], [via], self.points[-1:]])
-        ts = np.concatenate([self.times[:keep], [t_via], self.times[-1:]])
-        if keep > 0 and ts[keep] <= ts[keep - 1]:
-            pts = np.delete(pts, keep - 1, axis=0)
-            ts = np.delete(ts, keep - 1)
+        px, py = self.point_at(i, s)
+        t_p = self.time_at(i, s)
+        end = self.points[-1]
+        first = math.hypot(via[0] - px, via[1] - py)
+        second = math.hypot(end[0] - via[0], end[1] - via[1])
+        t_via = t_p + (self.end_time - t_p) * first / max(first + second, 1e-12)
+        keep = i + 1
+        pts = np.vstack([self.points[:keep], [[px, py]], [via], end[None, :]])
+        ts = np.concatenate([self.times[:keep], [t_p, t_via, self.end_time]])
+        # Drop a kept waypoint that coincides with P (P on a waypoint).
+        if ts[keep] <= ts[keep - 1] + 1e-12:
+            pts = np.delete(pts, keep, axis=0)
+            ts = np.delete(ts, keep)
         return Trajectory(pts, ts)
 
 

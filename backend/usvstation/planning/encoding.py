@@ -268,6 +268,23 @@ def _bit_tables(gene_bits: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarr
     return gene_of_bit, shift, weight
 
 
+_Y_LIMIT = 40_000.0  # m: twice the 20 km bound on coordinates
+_GAP_M = 4.0  # a free band in y at least this wide lets the range stand as it is
+
+
+def _gap_in(c_lo: np.ndarray, c_hi: np.ndarray, lo: float, hi: float) -> bool:
+    """True if the intervals [c_lo, c_hi] leave a band of _GAP_M free inside [lo, hi]."""
+    order = np.argsort(c_lo)
+    edge = lo
+    for a, b in zip(c_lo[order], c_hi[order], strict=True):
+        if a - edge >= _GAP_M:
+            return True
+        edge = max(edge, b)
+        if edge >= hi:
+            return False
+    return hi - edge >= _GAP_M
+
+
 def _y_range(problem: Problem, opts: IGAOptions) -> tuple[float, int]:
     """Search range of y: the paper's +-64 m at least, grown to cover start and obstacles."""
     res = opts.y_resolution
@@ -281,6 +298,23 @@ def _y_range(problem: Problem, opts: IGAOptions) -> tuple[float, int]:
         highs.append(float(np.max(f.centre[near, 1] + f.inflated[near])) + opts.y_margin)
     lo = max(min(lows), -cap - opts.y_margin)
     hi = min(max(highs), cap + opts.y_margin)
+    # a wall or island chain across the corridor that reaches past the range: grow the range
+    # along the chain (static obstacles between start and goal in x) until it ends (issue 12)
+    x_lo = min(float(problem.start[0]), float(problem.goal[0]))
+    x_hi = max(float(problem.start[0]), float(problem.goal[0]))
+    chain = f.static & (f.centre[:, 0] + f.inflated >= x_lo) & (f.centre[:, 0] - f.inflated <= x_hi)
+    if chain.any() and not _gap_in(f.centre[chain, 1] - f.inflated[chain],
+                                   f.centre[chain, 1] + f.inflated[chain], lo, hi):
+        c_lo = f.centre[chain, 1] - f.inflated[chain]
+        c_hi = f.centre[chain, 1] + f.inflated[chain]
+        for _ in range(64):
+            touch = (c_hi >= lo) & (c_lo <= hi)
+            new_lo = min(lo, float(c_lo[touch].min()) - opts.y_margin) if touch.any() else lo
+            new_hi = max(hi, float(c_hi[touch].max()) + opts.y_margin) if touch.any() else hi
+            new_lo, new_hi = max(new_lo, -_Y_LIMIT), min(new_hi, _Y_LIMIT)
+            if (new_lo, new_hi) == (lo, hi):
+                break
+            lo, hi = new_lo, new_hi
     lo = math.floor(lo / res) * res
     count = math.floor((hi - lo) / res + 1e-9) + 1
     return lo, count

@@ -7,6 +7,13 @@
     Fit_ang = sum over inner waypoints of (pi - theta) / pi    (theta: inner angle)
     Fit_mal = sum of |y_i| / N                                 (malposition, m)
 
+With `terms = "normalised"` (the default, issue 12) the fitness uses
+Fit_T and Fit_mal without units, so that the weights mean the same for an
+85 m recovery and a 2 km transit (D: straight start-goal distance):
+
+    Fit_T'   = t_end v_max / D                            (1: straight at top speed)
+    Fit_mal' = Fit_mal / D
+
 The hard gates are 1 when the constraint holds on every segment and 0
 otherwise: G_acc (|dv|/dT <= accel_max), G_vel (speed_min <= v <= speed_max),
 G_col (no segment enters an inflated obstacle, eq. 9), and G_turn, the
@@ -25,9 +32,10 @@ import numpy as np
 from usvstation.planning.encoding import PathBatch
 from usvstation.planning.options import IGAOptions
 from usvstation.planning.problem import Problem
-from usvstation.planning.xyt import hits_from_relative, polyline_hits, relative_positions
+from usvstation.planning.xyt import Num, hits_from_relative, polyline_hits, relative_positions
 
 _EPS = 1e-9
+CHUNK_ELEMENTS = 1 << 21  # (path, pair) elements per NumPy call: about 16 MB per temporary
 
 
 @dataclass(frozen=True)
@@ -39,6 +47,8 @@ class Evaluation:
     fit_t: np.ndarray
     fit_ang: np.ndarray
     fit_mal: np.ndarray
+    fit_t_norm: np.ndarray  # t_end v_max / D: 1 for a straight run at top speed
+    fit_mal_norm: np.ndarray  # Fit_mal / D
     g_acc: np.ndarray
     g_vel: np.ndarray
     g_col: np.ndarray
@@ -65,6 +75,30 @@ def turn_angles(headings: np.ndarray) -> np.ndarray:
     """|pi - theta| at every inner waypoint: the change of heading, radians in [0, pi]."""
     d = headings[:, 1:] - headings[:, :-1]
     return np.abs(np.mod(d + np.pi, 2.0 * np.pi) - np.pi)
+
+
+def first_turn(paths: PathBatch, problem: Problem) -> np.ndarray:
+    """Turn of the hull from the start heading onto the first leg, rad (issue 12)."""
+    h0 = np.arctan2(paths.seg_dy[:, 0], paths.seg_dx[:, 0])
+    cx, cy = problem.current
+    v0 = paths.v[:, 0]
+    hull = np.arctan2(v0 * np.sin(h0) - cy, v0 * np.cos(h0) - cx)
+    return np.abs(np.mod(hull - problem.start_heading + np.pi, 2.0 * np.pi) - np.pi)
+
+
+def water_speed_bad(dx: Num, dy: Num, v0: Num, v1: Num, problem: Problem) -> np.ndarray:
+    """True where a segment's speed through the water (ground velocity minus current) leaves
+    [speed_min, speed_max] at either end, or the hull would make way astern (issue 12)."""
+    cx, cy = problem.current
+    n = np.maximum(np.hypot(dx, dy), _EPS)
+    ux, uy = dx / n, dy / n
+    bad = np.zeros(np.broadcast_shapes(np.shape(ux), np.shape(v0), np.shape(v1)), dtype=bool)
+    for v in (v0, v1):
+        wx, wy = v * ux - cx, v * uy - cy
+        w2 = wx * wx + wy * wy
+        bad |= (w2 < (problem.speed_min * (1 - 1e-6)) ** 2) | (
+            w2 > (problem.speed_max * (1 + 1e-6)) ** 2) | (wx * ux + wy * uy <= 0.0)
+    return bad
 
 
 def collision_matrix(paths: PathBatch, problem: Problem) -> np.ndarray:
@@ -99,19 +133,47 @@ class Evaluator:
             self._pair_obs = (col[0][:, 0], col[0][:, 1], col[1][:, 0], col[1][:, 1], r[obs])
 
     def collisions(self, paths: PathBatch) -> np.ndarray:
-        """Number of (segment, obstacle) pairs in collision, per path."""
+        """Number of (segment, obstacle) pairs in collision, per path.
+
+        x-y-t pruning (issue 12): a pair is tested only if the obstacle's
+        inflated circle, swept over the batch's time window of that segment,
+        overlaps the box the batch's segments span in x and y; no pair that
+        could collide is skipped, so the count is exact.
+        """
         if self.problem.obstacles.count == 0:
             return np.zeros(len(paths), dtype=np.int64)
         if self.pairs is None:
             return collision_matrix(paths, self.problem).sum(axis=(0, 1))
+        seg_all, keep_all = self._pairs_near(paths)
+        total = np.zeros(len(paths), dtype=np.int64)
+        step = max(1, CHUNK_ELEMENTS // max(len(paths), 1))  # bounds memory on huge inputs
+        for k in range(0, seg_all.shape[0], step):
+            seg, keep = seg_all[k:k + step], keep_all[k:k + step]
+            cx, cy, vx, vy, r = (a[keep] for a in self._pair_obs)
+            t0, t1 = paths.t[:, seg], paths.t[:, seg + 1]
+            hits = hits_from_relative(
+                paths.x[:, seg] - (cx + vx * t0), paths.y[:, seg] - (cy + vy * t0),
+                paths.x[:, seg + 1] - (cx + vx * t1), paths.y[:, seg + 1] - (cy + vy * t1), r,
+            )
+            total += hits.sum(axis=1)
+        return total
+
+    def _pairs_near(self, paths: PathBatch) -> tuple[np.ndarray, np.ndarray]:
+        """The precomputed pairs whose obstacle can reach the batch's segment boxes."""
         seg = self.pairs[0]
+        x0, x1, y0, y1 = paths.x[:, :-1], paths.x[:, 1:], paths.y[:, :-1], paths.y[:, 1:]
+        xlo = np.minimum(x0, x1).min(axis=0)[seg]
+        xhi = np.maximum(x0, x1).max(axis=0)[seg]
+        ylo = np.minimum(y0, y1).min(axis=0)[seg]
+        yhi = np.maximum(y0, y1).max(axis=0)[seg]
+        tlo, thi = paths.t[:, :-1].min(axis=0)[seg], paths.t[:, 1:].max(axis=0)[seg]
         cx, cy, vx, vy, r = self._pair_obs
-        t0, t1 = paths.t[:, seg], paths.t[:, seg + 1]
-        hits = hits_from_relative(
-            paths.x[:, seg] - (cx + vx * t0), paths.y[:, seg] - (cy + vy * t0),
-            paths.x[:, seg + 1] - (cx + vx * t1), paths.y[:, seg + 1] - (cy + vy * t1), r,
-        )
-        return hits.sum(axis=1)
+        ox_lo = cx + np.minimum(vx * tlo, vx * thi) - r
+        ox_hi = cx + np.maximum(vx * tlo, vx * thi) + r
+        oy_lo = cy + np.minimum(vy * tlo, vy * thi) - r
+        oy_hi = cy + np.maximum(vy * tlo, vy * thi) + r
+        keep = np.flatnonzero((ox_hi >= xlo) & (ox_lo <= xhi) & (oy_hi >= ylo) & (oy_lo <= yhi))
+        return seg[keep], keep
 
     def __call__(self, paths: PathBatch) -> Evaluation:
         """Gates, terms and fitness (eq. 12, or the EG3 linear penalty) of every path."""
@@ -125,6 +187,11 @@ class Evaluator:
         acc_bad |= paths.seg_len <= _EPS
         vel_bad = (paths.v < problem.speed_min - _EPS) | (paths.v > problem.speed_max + _EPS)
         turn_bad = turns > problem.turn_max + _EPS
+        if problem.start_heading is not None:
+            turn_bad = np.column_stack([turn_bad, first_turn(paths, problem) > problem.turn_max])
+        if problem.current != (0.0, 0.0):
+            vel_bad = np.column_stack([vel_bad, water_speed_bad(
+                paths.seg_dx, paths.seg_dy, paths.v[:, :-1], paths.v[:, 1:], problem)])
         n_col = self.collisions(paths)
 
         n = paths.x.shape[1]
@@ -132,6 +199,11 @@ class Evaluator:
         fit_t = paths.t[:, -1] / (n - 1)
         fit_ang = turns.sum(axis=1) / np.pi
         fit_mal = np.abs(paths.y).sum(axis=1) / n
+        dist = max(problem.distance, _EPS)
+        fit_t_norm = paths.t[:, -1] * problem.speed_max / dist
+        fit_mal_norm = fit_mal / dist
+        t_term, mal_term = (fit_t_norm, fit_mal_norm) if opts.terms == "normalised" \
+            else (fit_t, fit_mal)
         n_acc, n_vel, n_turn = acc_bad.sum(axis=1), vel_bad.sum(axis=1), turn_bad.sum(axis=1)
         g_acc, g_vel, g_col, g_turn = n_acc == 0, n_vel == 0, n_col == 0, n_turn == 0
         violations = n_acc + n_vel + n_turn + n_col
@@ -140,11 +212,12 @@ class Evaluator:
             fitness = _linear_penalty(fit_d, violations, opts)
         else:
             d = opts.weight_d if problem.recovery else 0.0
-            denom = opts.weight_a * fit_d + opts.weight_b * fit_t + opts.weight_c * fit_ang
-            denom += d * fit_mal
+            denom = opts.weight_a * fit_d + opts.weight_b * t_term + opts.weight_c * fit_ang
+            denom += d * mal_term
             fitness = np.where(violations == 0, opts.scale_A / denom, 0.0)
         return Evaluation(
             fitness=fitness, fit_d=fit_d, fit_t=fit_t, fit_ang=fit_ang, fit_mal=fit_mal,
+            fit_t_norm=fit_t_norm, fit_mal_norm=fit_mal_norm,
             g_acc=g_acc, g_vel=g_vel, g_col=g_col, g_turn=g_turn, violations=violations,
         )
 

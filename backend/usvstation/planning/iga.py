@@ -60,8 +60,12 @@ class _Population:
     fit: np.ndarray  # (P,)
 
 
-def run_iga(problem: Problem, opts: IGAOptions, layout: GeneLayout | None = None) -> IGAResult:
-    """Plan with the IGA; deterministic for a given `opts.seed`."""
+def run_iga(
+    problem: Problem, opts: IGAOptions, layout: GeneLayout | None = None,
+    deadline: float | None = None,
+) -> IGAResult:
+    """Plan with the IGA; deterministic for a given `opts.seed` (unless the `deadline`,
+    a time.perf_counter() value, cuts the run short: stop_reason "time_budget")."""
     t0 = time.perf_counter()
     rng = np.random.default_rng(opts.seed)
     layout = layout or GeneLayout.build(problem, opts)
@@ -73,7 +77,7 @@ def run_iga(problem: Problem, opts: IGAOptions, layout: GeneLayout | None = None
     def fitness(codes: np.ndarray) -> np.ndarray:
         return evaluator(layout.decode_codes(codes)).fitness
 
-    levels, fresh, report = _foundation(layout, problem, opts, rng)
+    levels, fresh, report = _foundation(layout, problem, opts, rng, deadline)
     codes = layout.levels_to_codes(levels)
     pop = _Population(codes, fitness(codes))
     evaluations = pop_n
@@ -109,6 +113,8 @@ def run_iga(problem: Problem, opts: IGAOptions, layout: GeneLayout | None = None
         hist_best.append(best_fit)
         hist_elite.append(_elite_mean(pop.fit, n_elite))
         reason = _converged(hist_best, opts)
+        if reason is None and deadline is not None and time.perf_counter() > deadline:
+            reason = "time_budget"
         if reason:
             stop = reason
             break
@@ -122,7 +128,8 @@ def run_iga(problem: Problem, opts: IGAOptions, layout: GeneLayout | None = None
 
 
 def _foundation(
-    layout: GeneLayout, problem: Problem, opts: IGAOptions, rng: np.random.Generator
+    layout: GeneLayout, problem: Problem, opts: IGAOptions, rng: np.random.Generator,
+    deadline: float | None = None,
 ) -> tuple[np.ndarray, np.ndarray, PreheatReport]:
     """Initial population (levels), a stock of fresh preheated paths for SSIH, the report.
 
@@ -134,13 +141,15 @@ def _foundation(
     if not opts.preheat:
         empty = np.zeros((0, layout.n_genes), dtype=np.int64)
         return random_levels(layout, rng, pop_n), empty, PreheatReport()
-    grown, ok, report = preheat(layout, problem, opts, rng, (3 * pop_n) // 2, need=pop_n)
-    if ok.sum() < max(4, pop_n // 4):
+    grown, ok, report = preheat(layout, problem, opts, rng, (3 * pop_n) // 2, need=pop_n,
+                                deadline=deadline)
+    if ok.sum() < max(4, pop_n // 4) and (deadline is None or time.perf_counter() < deadline):
         # hard problem: one more round with many more candidates and draws per waypoint
         harder = opts.model_copy(update={
             "candidates": 4 * opts.candidates, "preheat_retries": 4 * opts.preheat_retries,
         })
-        more, ok_more, rep = preheat(layout, problem, harder, rng, 2 * pop_n, need=pop_n)
+        more, ok_more, rep = preheat(layout, problem, harder, rng, 2 * pop_n, need=pop_n,
+                                     deadline=deadline)
         report.merge(rep)
         grown, ok = np.vstack([grown, more]), np.concatenate([ok, ok_more])
     grown = grown[ok]
@@ -211,9 +220,18 @@ def _newborns(
 ) -> tuple[np.ndarray, np.ndarray, PreheatReport]:
     """SSIH's newborns (codes): mostly local re-initialisations of elite paths, some fresh.
 
-    Without a living elite (EG1's random start) the newborns are preheated
-    directly. Returns (newborns, fresh stock left, report).
+    Without a living elite the newborns are preheated directly; under EG1
+    (no preheating at all) they are random instead. Returns (newborns, fresh
+    stock left, report).
     """
+    if not opts.preheat:
+        pool = [layout.levels_to_codes(random_levels(layout, rng, max(1, n // 5)))]
+        if parents.shape[0]:
+            local = local_reinit(layout, rng, layout.codes_to_levels(parents), n - pool[0].shape[0])
+            pool.append(layout.levels_to_codes(local))
+        else:
+            pool = [layout.levels_to_codes(random_levels(layout, rng, n))]
+        return np.vstack(pool), fresh, report
     if parents.shape[0] == 0 and fresh.shape[0] == 0:
         grown, ok, rep = preheat(layout, problem, opts, rng, n)
         report.merge(rep)

@@ -17,10 +17,12 @@ class IGAOptions(BaseModel):
 
     model_config = ConfigDict(extra="forbid", strict=True, allow_inf_nan=False)
 
-    seed: int = Field(1, ge=0, description="random seed; the same seed gives the same plan")
+    seed: int = Field(
+        1, ge=0, le=2**32 - 1, description="random seed; the same seed gives the same plan"
+    )
 
     # population and genetic operators
-    population: int = Field(60, ge=4, le=5000)
+    population: int = Field(60, ge=4, le=1000)
     elite_fraction: float = Field(0.1, ge=0.0, le=0.5, description="share kept as elite group")
     tournament_size: int = Field(3, ge=2, le=16)
     crossover_rate: float = Field(0.9, ge=0.0, le=1.0)
@@ -29,47 +31,66 @@ class IGAOptions(BaseModel):
     )
 
     # stopping (Algorithm 1 lines 20 and 30)
-    generations_max: int = Field(500, ge=1, le=100_000)
+    generations_max: int = Field(500, ge=1, le=5000)
     fitness_target: float | None = Field(
-        None, gt=0.0, description="stop once the best fitness reaches this value"
+        None, gt=0.0, le=1e9, description="stop once the best fitness reaches this value"
     )
     stall_generations: int = Field(
-        10, ge=1, description="converged when the best fitness stalls this many generations"
+        10, ge=1, le=5000,
+        description="converged when the best fitness stalls this many generations",
     )
-    stall_tolerance: float = Field(3e-3, ge=0.0, description="relative gain counted as progress")
+    stall_tolerance: float = Field(
+        3e-3, ge=0.0, le=1.0, description="relative gain counted as progress"
+    )
 
     # encoding (eq. 10-11): widths grow to cover the scenario
-    d_sl: float = Field(8.0, gt=0.0, description="nominal waypoint interval D_SL along x, m")
+    d_sl: float = Field(
+        8.0, ge=0.5, le=10_000.0, description="nominal waypoint interval D_SL along x, m"
+    )
     max_waypoints: int = Field(20, ge=1, le=200, description="cap on intermediate waypoints")
-    x_resolution: float = Field(1.0, gt=0.0)
-    y_resolution: float = Field(1.0, gt=0.0)
-    speed_resolution: float = Field(0.2, gt=0.0)
+    x_resolution: float = Field(1.0, ge=0.05, le=1000.0, description="m")
+    y_resolution: float = Field(1.0, ge=0.05, le=1000.0, description="m")
+    speed_resolution: float = Field(0.2, ge=0.01, le=30.0, description="m/s")
     x_bits: int = Field(3, ge=1, le=24)
     y_bits: int = Field(7, ge=1, le=24)
     speed_bits: int = Field(4, ge=1, le=24)
-    y_half_width: float = Field(64.0, gt=0.0, description="least |y| range searched, m")
+    y_half_width: float = Field(
+        64.0, gt=0.0, le=20_000.0, description="least |y| range searched, m"
+    )
     y_margin: float = Field(
-        15.0, ge=0.0, description="search beyond the start and obstacles in y, m"
+        15.0, ge=0.0, le=20_000.0, description="search beyond the start and obstacles in y, m"
     )
 
     # recovery approach
     approach_length: float = Field(
-        5.0, ge=0.0, description="straight run-in before the ramp end, m"
+        5.0, ge=0.0, le=1000.0, description="straight run-in before the ramp end, m"
     )
     align_max_deg: float = Field(
         10.0, gt=0.0, le=45.0, description="last segment within this of the ramp axis"
     )
 
     # fitness eq. 12: A / (a Fit_d + b Fit_T + c Fit_ang + d Fit_mal)
-    weight_a: float = Field(4.0, ge=0.0, description="a, on Fit_d")
-    weight_b: float = Field(0.5, ge=0.0, description="b, on Fit_T")
-    weight_c: float = Field(2.0, ge=0.0, description="c, on Fit_ang")
-    weight_d: float = Field(0.5, ge=0.0, description="d, on Fit_mal (recovery only)")
-    scale_A: float = Field(10.0, gt=0.0, description="A, numerator of eq. 12")
+    weight_a: float = Field(4.0, ge=0.0, le=1e6, description="a, on Fit_d")
+    weight_b: float = Field(
+        1.4, ge=0.0, le=1e6, description="b, on Fit_T (normalised; 0.5 on the paper's seconds)"
+    )
+    weight_c: float = Field(2.0, ge=0.0, le=1e6, description="c, on Fit_ang")
+    weight_d: float = Field(
+        40.0, ge=0.0, le=1e6,
+        description="d, on Fit_mal (recovery only; normalised; 0.5 on the paper's metres)",
+    )
+    terms: Literal["normalised", "paper"] = Field(
+        "normalised",
+        description="Fit_T and Fit_mal without units (t_end v_max / D, Fit_mal / D), or in the "
+        "paper's seconds and metres (then weights b and d of about 0.5)",
+    )
+    scale_A: float = Field(10.0, gt=0.0, le=1e9, description="A, numerator of eq. 12")
 
     # preheating (Algorithm 1 lines 2-18)
-    preheat_retries: int = Field(2, ge=1, description="N_max draws per waypoint")
-    preheat_restarts: int = Field(3, ge=0, description="fresh starts of a blocked individual")
+    preheat_retries: int = Field(2, ge=1, le=64, description="N_max draws per waypoint")
+    preheat_restarts: int = Field(
+        3, ge=0, le=64, description="fresh starts of a blocked individual"
+    )
     candidates: int = Field(10, ge=1, le=64, description="candidate points per draw")
 
     # ablations of section 4.2
@@ -77,6 +98,12 @@ class IGAOptions(BaseModel):
     ssih: bool = Field(True, description="False = EG2: no sacrifice and hybridisation")
     fitness: Literal["eq12", "linear"] = Field("eq12", description="'linear' = EG3")
     elitism: bool = Field(True, description="False = EG4: no elite group")
+
+    time_budget_s: float = Field(
+        5.0, gt=0.0, le=600.0,
+        description="wall-clock budget of one plan: past it the best feasible plan so far is "
+        "returned with a warning, or none",
+    )
 
     smoothing: bool = Field(True, description="add a B-spline smoothed path to the plan")
     clearance_fallback: bool = Field(

@@ -3,60 +3,121 @@
 from __future__ import annotations
 
 import math
+import time
 from typing import Any
 
 import numpy as np
 from scipy import ndimage
 
-from usvstation.planning.encoding import InfeasibleProblem
+from usvstation.planning.encoding import GeneLayout, InfeasibleProblem
 from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.planning.iga import IGAResult, run_iga
 from usvstation.planning.options import IGAOptions
-from usvstation.planning.problem import Problem
+from usvstation.planning.problem import Problem, sweep_moving
 from usvstation.planning.smoothing import smooth_path
+from usvstation.planning.start import Prefix, needs_prefix, prefixes, start_state
+from usvstation.planning.validate import current_vector, hull_clearance, plan_violations
 from usvstation.planning.xyt import ObstacleField
-from usvstation.scenario import Scenario
+from usvstation.scenario import Scenario, scenario_at
 
 PLANNERS = ("iga",)
+MIN_WATER_M = 0.05  # least water between hull and obstacle a plan may keep, m
 
 
 def plan_scenario(
     scenario: Scenario, planner: str = "iga", seed: int | None = None, **overrides: Any
 ) -> dict[str, Any]:
-    """Plan `scenario`; return the stable plan dict or raise NoFeasiblePlan."""
+    """Plan `scenario`; return the stable plan dict or raise NoFeasiblePlan.
+
+    Every plan returned has passed the exact validator (`plan_violations`):
+    true hull clearance, first turn, speed through the water, timing margin.
+    The run stops at `planner.time_budget_s` with the best valid plan so far.
+    """
     if planner not in PLANNERS:
         raise ValueError(f"planner: unknown planner {planner!r}; available: {', '.join(PLANNERS)}")
     if seed is not None:
         overrides["seed"] = seed
     opts = scenario.planner_options(**overrides)
+    deadline = time.perf_counter() + opts.time_budget_s
     first: tuple[Problem, IGAResult] | None = None
+    reasons: list[str] = []
+    direct = not needs_prefix(scenario, opts)
     for margin, warning in clearance_margins(scenario, opts.clearance_fallback):
-        problem = Problem.from_scenario(scenario, margin)
-        try:
-            result = run_iga(problem, opts)
-        except InfeasibleProblem as exc:
-            raise NoFeasiblePlan(f"no feasible plan: {exc}") from None
-        if result.feasible:
-            plan = build_plan(scenario, problem, opts, result)
-            plan["metrics"]["inflation_m"] = _r(margin)
-            plan["warnings"] = [warning] if warning else []
-            return plan
-        first = first or (problem, result)
-    assert first is not None
-    raise NoFeasiblePlan(f"no feasible plan: {explain_infeasible(*first)}")
+        starts: list[Prefix | None] = [None] if direct else []
+        starts += prefixes(scenario, opts, margin)
+        if not starts:  # no run-out needed after all (e.g. a hull already crabbing right)
+            starts = [None]
+        for prefix in starts:
+            state = start_state(scenario) if prefix is None else prefix.end
+            problem = Problem.from_scenario(scenario, margin, state=state)
+            try:
+                layout = GeneLayout.build(problem, opts)
+                blocked = run_in_blockers(problem, layout)
+                if blocked:  # no arrival along the ramp axis is free: no GA run can help
+                    names = ", ".join(f"obstacles[{i}]" for i in blocked)
+                    reasons.append(
+                        f"the run-in along the ramp axis is blocked: {names} (inflated by "
+                        f"eq. 7) cross every arrival within "
+                        f"{math.degrees(math.atan(layout.cone_tan)):g} deg of the axis")
+                    continue
+                result = run_iga(problem, opts, layout, deadline=deadline)
+            except InfeasibleProblem as exc:
+                reasons.append(str(exc))
+                continue
+            if result.feasible:
+                plan = build_plan(scenario, problem, opts, result, prefix)
+                bad = plan_violations(plan, scenario)
+                if not bad:
+                    full = margin == clearance_margins(scenario, False)[0][0]
+                    plan["metrics"]["inflation_m"] = _r(margin)
+                    plan["metrics"]["margin_kept"] = full
+                    plan["warnings"] = [warning] if warning else []
+                    if plan.pop("_smooth_warning", None):
+                        plan["warnings"].append(
+                            "smoothed path dropped: it would bring the hull too close to an "
+                            "obstacle; follow the waypoints")
+                    if result.stop_reason == "time_budget":
+                        plan["warnings"].append(
+                            f"time budget of {opts.time_budget_s:g} s reached: best plan so far")
+                    return plan
+                reasons.append("the exact check refused the best path: " + bad[0])
+            first = first or (problem, result)
+            if time.perf_counter() > deadline:
+                break
+        if time.perf_counter() > deadline:
+            break
+    head = "no feasible plan"
+    if time.perf_counter() > deadline:
+        head += f" within the time budget of {opts.time_budget_s:g} s"
+    if first is None:
+        raise NoFeasiblePlan(f"{head}: " + (reasons[0] if reasons else
+                             "no collision-free way to turn the boat towards the goal"))
+    raise NoFeasiblePlan(f"{head}: {explain_infeasible(*first)}")
+
+
+def replan_from(
+    scenario: Scenario, x: float, y: float, heading_deg: float, speed: float, t: float,
+    planner: str = "iga", seed: int | None = None, **overrides: Any,
+) -> dict[str, Any]:
+    """Plan from a boat under way (ramp frame position, hull heading, speed through the water)
+    at `t` s after the scenario's t = 0: obstacles are propagated to that instant (eq. 8)
+    and the plan's t = 0 is that instant."""
+    at_now = scenario_at(scenario, x, y, heading_deg, speed, t)
+    return plan_scenario(at_now, planner=planner, seed=seed, **overrides)
 
 
 def clearance_margins(scenario: Scenario, fallback: bool) -> list[tuple[float, str | None]]:
-    """Obstacle margins to try: eq. 7's D_USV + R_c, then R_c = 0, then half the hull.
+    """Obstacle margins to try: eq. 7's D_USV + R_c, then R_c = 0, then half the hull plus 5 cm.
 
-    Half the hull length is the least margin a valid plan may keep; a plan
-    made with less than eq. 7's margin says so in its warnings.
+    Half the hull length is where the hull touches; a plan made with less
+    than eq. 7's margin says so in its warnings and `metrics.margin_kept`.
     """
     v = scenario.vessel
     full = v.length + v.compensation_radius
     levels: list[tuple[float, str | None]] = [(full, None)]
     if fallback:
-        for margin, what in ((v.length, "R_c = 0"), (v.length / 2.0, "half the hull length")):
+        least = v.length / 2.0 + MIN_WATER_M
+        for margin, what in ((v.length, "R_c = 0"), (least, "half the hull length + 5 cm")):
             if margin < levels[-1][0]:
                 levels.append((margin, (
                     f"reduced clearance: no plan keeps eq. 7's margin of {full:g} m "
@@ -66,19 +127,33 @@ def clearance_margins(scenario: Scenario, fallback: bool) -> list[tuple[float, s
 
 
 def build_plan(
-    scenario: Scenario, problem: Problem, opts: IGAOptions, result: IGAResult
+    scenario: Scenario, problem: Problem, opts: IGAOptions, result: IGAResult,
+    prefix: Prefix | None = None,
 ) -> dict[str, Any]:
-    """Waypoints in the scenario frame plus metrics, in the stable plan format."""
+    """Waypoints in the scenario frame plus metrics, in the stable plan format.
+
+    `heading_deg` is the hull heading leaving each waypoint (through the
+    water, so it crabs into a current), `course_deg` the course over ground.
+    """
     best, ev = result.best, result.evaluation
     xs, ys = problem.to_scenario_frame(best.x[0], best.y[0])
     t, v = best.t[0], best.v[0]
+    if prefix is not None:
+        xs = np.concatenate([prefix.x[:-1], xs])
+        ys = np.concatenate([prefix.y[:-1], ys])
+        t = np.concatenate([prefix.t[:-1], t + prefix.end.t])
+        v = np.concatenate([prefix.v[:-1], v])
     seg_heading = np.arctan2(np.diff(ys), np.diff(xs))
-    heading_deg = np.degrees(np.append(seg_heading, seg_heading[-1])) % 360.0
+    course = np.append(seg_heading, seg_heading[-1])
+    cx, cy = current_vector(scenario)
+    hull = np.arctan2(v * np.sin(course) - cy, v * np.cos(course) - cx)
+    course_deg = np.degrees(course) % 360.0
+    heading_deg = np.degrees(hull) % 360.0
     waypoints = [
-        {"x": _r(x), "y": _r(y), "t": _r(tt), "speed": _r(vv), "heading_deg": _r(h)}
-        for x, y, tt, vv, h in zip(xs, ys, t, v, heading_deg, strict=True)
+        {"x": _r(x), "y": _r(y), "t": _r(tt), "speed": _r(vv), "heading_deg": _r(h),
+         "course_deg": _r(c)}
+        for x, y, tt, vv, h, c in zip(xs, ys, t, v, heading_deg, course_deg, strict=True)
     ]
-    field = scenario_field(scenario)
     row = ev.row(0)
     plan: dict[str, Any] = {
         "planner": "iga",
@@ -91,16 +166,21 @@ def build_plan(
             "fit_t": _r(row["fit_t"]),
             "fit_mal": _r(row["fit_mal"]),
             "fit_ang": _r(row["fit_ang"]),
-            "length_m": _r(float(best.seg_len.sum())),
+            "fit_t_norm": _r(row["fit_t_norm"]),
+            "fit_mal_norm": _r(row["fit_mal_norm"]),
+            "terms": opts.terms,
+            "length_m": _r(float(np.hypot(np.diff(xs), np.diff(ys)).sum())),
             "duration_s": _r(float(t[-1])),
-            "min_clearance_m": _r(field.clearance(xs, ys, t)),
+            "min_clearance_m": None,
             "collision_free": bool(row["g_col"]),
             "generations": result.generations,
             "elapsed_s": round(result.elapsed_s, 6),
             "stop_reason": result.stop_reason,
             "evaluations": result.evaluations,
             "max_turn_deg": _r(_max_turn_deg(seg_heading)),
-            "arrival_heading_deg": _r(float(heading_deg[-1])),
+            "arrival_heading_deg": _r(float(course_deg[-1])),
+            "time_margin_s": scenario.vessel.time_margin_s,
+            "prefix_legs": 0 if prefix is None else prefix.legs,
         },
         "encoding": {
             "intermediate_waypoints": result.layout.n_mid,
@@ -116,12 +196,25 @@ def build_plan(
             "elite_mean": [_r(f) for f in result.history_elite_mean],
         },
     }
+    plan["metrics"]["min_clearance_m"] = _r(hull_clearance(plan, scenario))
     if opts.smoothing:
-        margin = float(problem.obstacles.inflated[0] - problem.obstacles.radius[0]) \
-            if problem.obstacles.count else 0.0
-        used = ObstacleField(field.centre, field.velocity, field.radius, field.radius + margin)
-        plan["smoothed"] = smooth_path(xs, ys, t, used)
+        smoothed = smooth_path(xs, ys, t, hull_field(scenario))
+        if smoothed["collision_free"]:
+            smoothed["min_clearance_m"] = _r(hull_clearance({"waypoints": smoothed["points"]},
+                                                            scenario))
+            plan["smoothed"] = smoothed
+        else:
+            plan["_smooth_warning"] = True
     return plan
+
+
+def hull_field(scenario: Scenario) -> ObstacleField:
+    """Obstacles as the hull's centre must see them: radius + half the hull, + 5 cm of water."""
+    f = scenario_field(scenario)
+    v = scenario.vessel
+    grown = f.radius + v.length / 2.0 + MIN_WATER_M
+    c, w, r, infl, src = sweep_moving(f.centre, f.velocity, f.radius, grown, v.time_margin_s)
+    return ObstacleField(c, w, r, infl, src)
 
 
 def scenario_field(scenario: Scenario) -> ObstacleField:
@@ -172,7 +265,11 @@ def explain_infeasible(problem: Problem, result: IGAResult) -> str:
 
 def approach_blockers(problem: Problem, result: IGAResult) -> list[int]:
     """Static obstacles that cut every straight arrival inside the ramp-axis cone."""
-    lay = result.layout
+    return run_in_blockers(problem, result.layout)
+
+
+def run_in_blockers(problem: Problem, lay: GeneLayout) -> list[int]:
+    """Static obstacles that cut every straight arrival inside the ramp-axis cone."""
     f = problem.obstacles
     if lay.cone_tan is None or f.count == 0:
         return []
@@ -207,7 +304,7 @@ def enclosing_obstacles(problem: Problem, cell: float = 0.5) -> list[int] | None
     r = f.inflated[static]
     lo = pts.min(axis=0) - r.max() - 5.0
     hi = pts.max(axis=0) + r.max() + 5.0
-    cell = max(cell, float(np.max(hi - lo)) / 1500.0)
+    cell = max(cell, float(np.max(hi - lo)) / 500.0)
     gx = np.arange(lo[0], hi[0], cell)
     gy = np.arange(lo[1], hi[1], cell)
     xx, yy = np.meshgrid(gx, gy, indexing="ij")

@@ -17,8 +17,10 @@ the goal; a second draw for a blocked waypoint spreads over every bearing
 the turn limit admits (up to 80 degrees off the x step). A transit aims at
 the goal. A recovery aims at a point on the ramp axis that each individual
 draws between the run-in and the start, and
-follows the axis from there: the population holds paths that join the axis
-early (small malposition, Fit_mal) and late (short, Fit_d). Half of the
+follows the axis from there (a fifth of the individuals aim at a random y
+until that point instead, for wide detours round long walls): the
+population holds paths that join the axis early (small malposition,
+Fit_mal) and late (short, Fit_d). Half of the
 individuals keep the admissible candidate closest to the aim (near-straight
 paths that detour only where they must), the other half a random admissible
 one (wide detours on either side). Three quarters of the candidate speeds
@@ -32,11 +34,13 @@ moving ones always, static ones when their inflated circle overlaps it.
 from __future__ import annotations
 
 import math
+import time
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from usvstation.planning.encoding import GeneLayout
+from usvstation.planning.fitness import water_speed_bad
 from usvstation.planning.options import IGAOptions
 from usvstation.planning.problem import Problem
 from usvstation.planning.xyt import Num, hits_from_relative
@@ -93,6 +97,7 @@ class _Walk:
     slope: np.ndarray  # bearing of the last segment against -x, rad (nan before the first)
     greedy: np.ndarray  # keeps the admissible candidate closest to the aim
     join_x: np.ndarray  # recovery: where this individual aims to join the ramp axis
+    aim_y: np.ndarray  # y it aims for until join_x: the axis, or a wide detour (issue 12)
 
 
 class _Grower:
@@ -108,6 +113,10 @@ class _Grower:
         self.v2min, self.v2max = problem.speed_min**2, problem.speed_max**2
         last = layout.n_mid - 1
         self.run_in = float(layout.x_of(layout.x_count[last] // 2, last))
+        # a boat under way: its course binds the first leg (slope is measured against -x)
+        self.start_slope = np.nan
+        if problem.start_course is not None:
+            self.start_slope = math.remainder(math.pi - problem.start_course, 2.0 * math.pi)
 
     def _near_block(self, k: int) -> _Obstacles:
         """Obstacles that can touch a segment ending in block k (k = n_mid: the goal leg)."""
@@ -130,8 +139,9 @@ class _Grower:
         walk = _Walk(
             x=np.full(count, lay.start[0]), y=np.full(count, lay.start[1]),
             t=np.zeros(count), v=np.full(count, lay.start_speed),
-            slope=np.full(count, np.nan), greedy=self.rng.random(count) < 0.5,
+            slope=np.full(count, self.start_slope), greedy=self.rng.random(count) < 0.5,
             join_x=self.rng.uniform(self.run_in, float(lay.start[0]), size=count),
+            aim_y=self._aim_y(count),
         )
         for k in range(lay.n_mid):
             pending = np.flatnonzero(alive)
@@ -160,10 +170,10 @@ class _Grower:
         xl = rng.integers(0, lay.x_count[k], size=(n, c))
         x = lay.x_of(xl, k)
         dx = px - x  # > 0: the path steps towards the goal
-        ax, ay = self._aim(k, px, walk.join_x[idx, None])
+        ax, ay = self._aim(k, px, walk.join_x[idx, None], walk.aim_y[idx, None])
         taper = min(1.0, max(0.2, (lay.n_mid - 1 - k) / 3.0))
         offset = rng.uniform(-1.0, 1.0, size=(n, c))
-        if k == 0:
+        if k == 0 and np.isnan(self.start_slope):
             lo, hi = -_MAX_SLOPE, _MAX_SLOPE
         else:
             lo = np.maximum(slope0 - prob.turn_max, -_MAX_SLOPE)
@@ -182,15 +192,20 @@ class _Grower:
             y = lay.y_of(yl)
         slope = np.arctan2(y - py, dx)
         seg = np.hypot(dx, y - py)
-        vl, v, t, good = self._speed(pv, pt, seg)
-        if k > 0:
+        vl, v, t, good = self._speed(pv, pt, seg, -dx / seg, (y - py) / seg)
+        if k > 0 or not np.isnan(self.start_slope):
             good &= np.abs(slope - slope0) <= prob.turn_max + _EPS
+        if prob.current != (0.0, 0.0):
+            good &= ~water_speed_bad(x - px, y - py, pv, v, prob)
         good &= self._free(self.near[k], px, py, pt, x, y, t)
         if last:
             gx, gy = float(lay.goal[0]), float(lay.goal[1])
             gseg = np.hypot(x - gx, y - gy)
             good &= np.abs(np.arctan2(gy - y, x - gx) - slope) <= prob.turn_max + _EPS
-            gvl, _, gt, gok = self._speed(v, t, gseg)
+            gdx, gdy = gx - x, gy - y
+            gvl, gv, gt, gok = self._speed(v, t, gseg, gdx / gseg, gdy / gseg)
+            if prob.current != (0.0, 0.0):
+                gok &= ~water_speed_bad(gdx, gdy, v, gv, prob)
             good &= gok & self._free(self.near[k + 1], x, y, t, gx, gy, gt)
 
         placed = good.any(axis=1)
@@ -207,24 +222,41 @@ class _Grower:
             levels[who, -1] = gvl[pick]
         return placed
 
-    def _aim(self, k: int, px: np.ndarray, join_x: np.ndarray) -> tuple[np.ndarray, float]:
+    def _aim_y(self, count: int) -> np.ndarray:
+        """A fifth of the individuals aim wide, anywhere in the y range, until their join_x, so
+        that the population holds detours round walls longer than any local draw reaches."""
+        lay = self.layout
+        wide = self.rng.random(count) < 0.2
+        y = self.rng.uniform(lay.y_lo, lay.y_of(lay.y_count - 1), size=count)
+        return np.where(wide, y, float(lay.goal[1]))
+
+    def _aim(self, k: int, px: np.ndarray, join_x: np.ndarray,
+             aim_y: np.ndarray) -> tuple[np.ndarray, np.ndarray | float]:
         """Aim point (x, y): the goal, or a point on the ramp axis for a recovery."""
         lay = self.layout
         gx, gy = float(lay.goal[0]), float(lay.goal[1])
         if lay.cone_tan is None or k == lay.n_mid - 1:
             return np.full_like(px, gx), gy
-        return np.where(px > join_x + lay.x_res, join_x, self.run_in), gy
+        before = px > join_x + lay.x_res
+        return np.where(before, join_x, self.run_in), np.where(before, aim_y, gy)
 
     def _speed(
-        self, pv: np.ndarray, pt: np.ndarray, seg: np.ndarray
+        self, pv: np.ndarray, pt: np.ndarray, seg: np.ndarray, ux: Num = 1.0, uy: Num = 0.0,
     ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """A speed level reachable over `seg` within accel_max: (level, v, t, admissible)."""
-        lay = self.layout
-        reach, pv2 = (2.0 * self.problem.accel_max) * seg, pv * pv
-        jlo, jhi = lay.v_level_range(
-            np.sqrt(np.maximum(pv2 - reach, self.v2min)),
-            np.sqrt(np.minimum(pv2 + reach, self.v2max)),
-        )
+        lay, prob = self.layout, self.problem
+        reach, pv2 = (2.0 * prob.accel_max) * seg, pv * pv
+        vlo = np.sqrt(np.maximum(pv2 - reach, self.v2min))
+        vhi = np.sqrt(np.minimum(pv2 + reach, self.v2max))
+        if prob.current != (0.0, 0.0):
+            # ground speeds whose speed through the water lies in [speed_min, speed_max]
+            cx, cy = prob.current
+            along, across = ux * cx + uy * cy, ux * cy - uy * cx
+            c2 = across * across
+            vhi = np.minimum(vhi, along + np.sqrt(np.maximum(self.v2max - c2, 0.0)))
+            vhi = np.where(c2 >= self.v2max, -1.0, vhi)
+            vlo = np.maximum(vlo, along + np.sqrt(np.maximum(self.v2min - c2, 0.0)) + 1e-6)
+        jlo, jhi = lay.v_level_range(vlo, vhi)
         # three quarters of the draws take the fastest reachable speed, the rest are uniform
         u = self.rng.uniform(0.0, 4.0, size=seg.shape)
         vl = np.where(u >= 1.0, jhi, np.minimum(jlo + (u * (jhi - jlo + 1)).astype(np.int64), jhi))
@@ -237,16 +269,42 @@ class _Grower:
         """True where the segment misses every inflated obstacle of `obs` (eq. 9)."""
         if obs.index.size == 0:
             return np.ones(np.shape(x), dtype=bool)
-        ex0, ey0 = obs.relative(px, py, pt)
-        ex1, ey1 = obs.relative(x, y, t)
-        hits = hits_from_relative(ex0, ey0, ex1, ey1, obs.r)  # (m, n, C)
-        self.report.obstacle_hits[obs.index] += hits.sum(axis=(1, 2))
-        return ~hits.any(axis=0)
+        obs = _near_box(obs, px, py, pt, x, y, t)
+        if obs.index.size == 0:
+            return np.ones(np.shape(x), dtype=bool)
+        free = np.ones(np.broadcast_shapes(np.shape(x), np.shape(px)), dtype=bool)
+        step = max(1, (1 << 21) // max(free.size, 1))  # bounds memory on huge inputs
+        for k in range(0, obs.index.size, step):
+            part = _Obstacles(*(a[k:k + step] for a in (obs.index, obs.cx, obs.cy, obs.vx,
+                                                         obs.vy, obs.r)))
+            ex0, ey0 = part.relative(px, py, pt)
+            ex1, ey1 = part.relative(x, y, t)
+            hits = hits_from_relative(ex0, ey0, ex1, ey1, part.r)  # (m, n, C)
+            self.report.obstacle_hits[part.index] += hits.sum(axis=(1, 2))
+            free &= ~hits.any(axis=0)
+        return free
+
+
+def _near_box(obs: _Obstacles, px: Num, py: Num, pt: Num, x: Num, y: Num, t: Num) -> _Obstacles:
+    """The obstacles whose circle, swept over the draw's time window, reaches the box that
+    all candidate segments of the draw span (x-y-t pruning; exact, never drops a hit)."""
+    xlo, xhi = min(np.min(px), np.min(x)), max(np.max(px), np.max(x))
+    ylo, yhi = min(np.min(py), np.min(y)), max(np.max(py), np.max(y))
+    tlo, thi = float(np.min(pt)), float(np.max(t))
+    cx, cy, vx, vy, r = (a[:, 0, 0] for a in (obs.cx, obs.cy, obs.vx, obs.vy, obs.r))
+    keep = ((cx + np.maximum(vx * tlo, vx * thi) + r >= xlo)
+            & (cx + np.minimum(vx * tlo, vx * thi) - r <= xhi)
+            & (cy + np.maximum(vy * tlo, vy * thi) + r >= ylo)
+            & (cy + np.minimum(vy * tlo, vy * thi) - r <= yhi))
+    if keep.all():
+        return obs
+    return _Obstacles(obs.index[keep], obs.cx[keep], obs.cy[keep], obs.vx[keep], obs.vy[keep],
+                      obs.r[keep])
 
 
 def preheat(
     layout: GeneLayout, problem: Problem, opts: IGAOptions, rng: np.random.Generator,
-    count: int, need: int | None = None,
+    count: int, need: int | None = None, deadline: float | None = None,
 ) -> tuple[np.ndarray, np.ndarray, PreheatReport]:
     """Grow `count` individuals; returns (levels (count, G), ok (count,), report).
 
@@ -261,6 +319,8 @@ def preheat(
     todo = np.arange(count)
     for _ in range(opts.preheat_restarts + 1):
         if todo.size == 0 or ok.sum() >= need:
+            break
+        if deadline is not None and time.perf_counter() > deadline:
             break
         lv, good = grower.grow(todo.size)
         levels[todo[good]] = lv[good]

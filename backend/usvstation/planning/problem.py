@@ -18,6 +18,20 @@ from usvstation.scenario import Scenario
 
 
 @dataclass(frozen=True)
+class StartState:
+    """Where a plan (or a leg of it) starts, in the scenario frame: position, hull heading,
+    speed, and the time since the scenario's t = 0 (obstacles are propagated to it)."""
+
+    x: float
+    y: float
+    heading: float  # rad, hull heading, counter-clockwise from +x
+    speed: float  # m/s through the water
+    t: float = 0.0
+    bound: bool = False  # True: the first leg must stay within turn_max of `heading`
+    course: float | None = None  # rad, course over ground (default: the heading)
+
+
+@dataclass(frozen=True)
 class Problem:
     """Start, goal, obstacles and vessel limits in the planning frame (SI, radians)."""
 
@@ -34,27 +48,45 @@ class Problem:
     # planning frame -> scenario frame: p_scn = R(theta) p + offset
     theta: float = 0.0
     offset: tuple[float, float] = (0.0, 0.0)
+    start_heading: float | None = None  # planning-frame hull heading the first leg must respect
+    current: tuple[float, float] = (0.0, 0.0)  # planning-frame current, m/s
+    start_course: float | None = None  # planning-frame course over ground at the start
 
     @classmethod
-    def from_scenario(cls, scenario: Scenario, margin: float | None = None) -> Problem:
+    def from_scenario(
+        cls, scenario: Scenario, margin: float | None = None, state: StartState | None = None,
+        time_margin_s: float | None = None,
+    ) -> Problem:
         """The scenario in the planning frame; obstacles inflated by eq. 7.
 
         `margin` replaces eq. 7's D_USV + R_c (the clearance fallback of
-        plan_scenario); None keeps the full margin.
+        plan_scenario); None keeps the full margin. `state` starts the plan
+        elsewhere than the scenario's start (a leg, or a boat under way);
+        obstacles are then propagated to its time. Moving obstacles are swept
+        over +-`time_margin_s` (default: the vessel's time_margin_s) as a chain
+        of circles whose union covers the swept capsule.
         """
-        sx, sy = scenario.start.x, scenario.start.y
+        v = scenario.vessel
+        if state is None:
+            state = StartState(scenario.start.x, scenario.start.y,
+                               math.radians(scenario.start.heading_deg), scenario.start.speed)
+        sx, sy = state.x, state.y
         gx, gy = scenario.goal.x, scenario.goal.y
         recovery = scenario.kind == "recovery"
         theta = 0.0 if recovery else math.atan2(sy - gy, sx - gx)
         offset = (gx, gy)
         obs = scenario.obstacles
-        centre = np.array([[o.x, o.y] for o in obs], dtype=float).reshape(-1, 2)
+        centre = np.array([[o.x + o.vx * state.t, o.y + o.vy * state.t] for o in obs],
+                          dtype=float).reshape(-1, 2)
         velocity = np.array([[o.vx, o.vy] for o in obs], dtype=float).reshape(-1, 2)
         radius = np.array([o.radius for o in obs], dtype=float)
-        v = scenario.vessel
         inflated = (
             inflate_radius(radius, v.length, v.compensation_radius)
             if margin is None else radius + margin
+        )
+        tm = v.time_margin_s if time_margin_s is None else time_margin_s
+        centre, velocity, radius, inflated, source = sweep_moving(
+            centre, velocity, radius, inflated, tm
         )
         rot = _rotation(-theta)
         field = ObstacleField(
@@ -62,12 +94,16 @@ class Problem:
             velocity=velocity @ rot.T,
             radius=radius,
             inflated=inflated,
+            source=source,
         )
         start = (np.array([sx, sy]) - np.array(offset)) @ rot.T
+        env = scenario.environment
+        ca = math.radians(env.current_dir_deg) - theta
+        current = (env.current_speed * math.cos(ca), env.current_speed * math.sin(ca))
         return cls(
             recovery=recovery,
             start=start,
-            start_speed=float(np.clip(scenario.start.speed, v.speed_min, v.speed_max)),
+            start_speed=float(np.clip(state.speed, v.speed_min, v.speed_max)),
             goal=np.zeros(2),
             obstacles=field,
             speed_min=v.speed_min,
@@ -77,6 +113,12 @@ class Problem:
             hull_length=v.length,
             theta=theta,
             offset=offset,
+            start_heading=(state.heading - theta) if state.bound else None,
+            start_course=(
+                (state.heading if state.course is None else state.course) - theta
+                if state.bound else None
+            ),
+            current=current,
         )
 
     def to_scenario_frame(self, x: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -88,6 +130,43 @@ class Problem:
     def distance(self) -> float:
         """Straight-line distance from start to goal, m."""
         return float(np.hypot(*(self.start - self.goal)))
+
+
+def sweep_moving(
+    centre: np.ndarray, velocity: np.ndarray, radius: np.ndarray, inflated: np.ndarray,
+    margin_s: float,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Replace each moving circle by circles at shifts d in [-margin_s, margin_s] (issue 12).
+
+    The circles sit s = R_l / 2 apart along the track, each of radius
+    sqrt(R_l^2 + (s / 2)^2), so their union covers the capsule swept by the
+    circle of radius R_l (the worst point lies midway between two centres).
+    An obstacle that moves less than R_l / 2 in margin_s stays a single
+    circle of radius R_l + |v| margin_s, which covers the capsule too.
+    Returns (centre, velocity, radius, inflated, source index).
+    """
+    n = radius.shape[0]
+    source = np.arange(n)
+    speed = np.hypot(velocity[:, 0], velocity[:, 1]) if n else np.zeros(0)
+    moving = speed > 0.0
+    if margin_s <= 0.0 or not moving.any():
+        return centre, velocity, radius, inflated, source
+    spacing = inflated / 2.0
+    sweep = margin_s * speed
+    # a slow drifter (sweep within half its radius) stays one circle, grown by the sweep
+    single = moving & (sweep <= 0.5 * inflated)
+    inflated = np.where(single, inflated + sweep, inflated)
+    chain = moving & ~single
+    copies = np.where(chain, np.ceil(2.0 * sweep / spacing).astype(np.int64) + 1, 1)
+    src = np.repeat(source, copies)
+    first = np.repeat(np.cumsum(copies) - copies, copies)
+    k = np.arange(src.shape[0]) - first
+    cnt = copies[src]
+    shift = np.where(cnt > 1, -margin_s + 2.0 * margin_s * k / np.maximum(cnt - 1, 1), 0.0)
+    gap = np.where(cnt > 1, 2.0 * margin_s * speed[src] / np.maximum(cnt - 1, 1), 0.0)
+    infl = np.sqrt(inflated[src] ** 2 + (gap / 2.0) ** 2)
+    new_centre = centre[src] + velocity[src] * shift[:, None]
+    return new_centre, velocity[src], radius[src], infl, src
 
 
 def _rotation(angle: float) -> np.ndarray:

@@ -42,6 +42,7 @@ class ObstacleField:
     velocity: np.ndarray  # (M, 2) m/s
     radius: np.ndarray  # (M,) m, R_obs
     inflated: np.ndarray  # (M,) m, R_l = R_obs + D_USV + R_c
+    source: np.ndarray | None = None  # (M,) index of the scenario obstacle each circle stands for
 
     @property
     def count(self) -> int:

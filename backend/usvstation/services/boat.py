@@ -138,7 +138,10 @@ class BoatService:
         return rec.public() if rec else None
 
     # --- missions ---------------------------------------------------------------------------
-    async def create_mission(self, plan_id: str) -> dict[str, Any]:
+    async def create_mission(self, plan_id: str,
+                             swap_at_ms: int | None = None) -> dict[str, Any]:
+        """Upload a plan: staged for START, or (boat RUNNING) hot-swapped at `swap_at_ms` of
+        boat uptime, by default the earliest instant the upload surely makes."""
         job = self.plans.get(plan_id)
         if job is None:
             raise BoatError(404, f"no plan {plan_id!r}")
@@ -153,10 +156,12 @@ class BoatService:
                                  "time")
         link = self._require_link()
         report = link.report
-        swap_at_ms = 0
         if report is not None and report.state in ("HOLD", "FAILSAFE"):
             raise BoatError(409, f"the boat is {report.state}: RESUME or ABORT first")
-        if report is not None and report.state == "RUNNING":
+        running = report is not None and report.state == "RUNNING"
+        if not running:
+            swap_at_ms = 0
+        elif swap_at_ms is None:
             swap_at_ms = self._swap_instant(link)
         frame = RampFrame(origin["lat"], origin["lon"], origin["ramp_bearing_deg"])
         wire_id = secrets.randbits(32) or 1
@@ -170,6 +175,21 @@ class BoatService:
         self.uploading = rec
         await self._save(rec)
         self._spawn(self._upload(rec, mission, swap_at_ms))
+        return rec.public()
+
+    async def swap_mission(self, plan_id: str, swap_at_ms: int) -> dict[str, Any]:
+        """Hot swap (usv-link 2): the RUNNING boat replaces its mission by `plan_id`'s at
+        `swap_at_ms` of its uptime, where the plan's t = 0 lies. Returns once the boat
+        verified and scheduled it; 409 when it did not (the old mission runs on)."""
+        report = self._require_link().report
+        if report is None or report.state != "RUNNING":
+            state = report.state if report is not None else "not reporting"
+            raise BoatError(409, f"a hot swap needs a RUNNING boat; it is {state}")
+        rec = self.missions[(await self.create_mission(plan_id, swap_at_ms))["id"]]
+        while self.uploading is rec:
+            await asyncio.sleep(0.02)
+        if rec.state in (MissionStatus.FAILED, MissionStatus.GONE):
+            raise BoatError(409, f"hot swap of plan {plan_id} failed: {rec.error or rec.state}")
         return rec.public()
 
     def _swap_instant(self, link: BoatLink) -> int:

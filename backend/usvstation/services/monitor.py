@@ -54,6 +54,12 @@ ASSESS_MIN_INTERVAL_S = 0.1  # every frame up to 10 Hz (telemetry runs at 5 Hz o
 DEFAULT_TIME_MARGIN_S = 5.0
 MIN_WARNING_M = 0.3  # the clearance warning threshold when R_c is smaller
 OWN_SHIP_AGE_S = (5.0, 10.0, 30.0)  # a silent own-ship position: advisory, caution, warning
+# Re-plans start this far ahead (wall-clock seconds) of the frame that raised them, where
+# the boat swaps onto them: under `auto`, planning (tens of ms), the hot-swap upload (about
+# 0.1 s for 30 waypoints at 57600 baud) and its retries fit well inside; under `confirm`
+# the operator has about 8 s to accept before the instant passes and the boat denies the
+# swap (the re-plan then fails with the boat's reason and the old mission runs on).
+SWAP_LEAD_S = {"auto": 2.0, "confirm": 10.0, "off": 2.0}
 NO_HOT_SWAP = ("the boat link has no hot swap (usv-link 2, BoatService.swap_mission): "
                "the re-plan is kept as a plan; hold, abort and upload it to use it")
 
@@ -231,15 +237,21 @@ class ReplanService:
         self.replans[record["id"]] = record
         self._t_event[record["id"]] = now
         speed = float(np.hypot(boat.vx, boat.vy))
+        # in boat time; never more than a third of what is left of the plan
+        lead_s = min(SWAP_LEAD_S[self.policy] * max(1.0, m.world.sim_speed),
+                     float(a.path[-1, 2]) / 3.0)
+        boat_time = m.last_row["boat_time"] if m.last_row else 0.0
         try:
             scenario, dropped = replan_scenario(m.scenario, a, targets, speed, frame_velocity,
-                                                seed=len(self.replans))
+                                                lead_s=lead_s, seed=len(self.replans))
         except (ReplanImpossible, ValueError) as exc:
             record.update(state="failed", error=str(exc))
             self.state = ReplanState(last_t=now)
             self._save(record)
             return
         record["dropped_targets"] = dropped
+        # the new plan starts where the boat will be lead_s after this frame: swap there
+        record["swap_at_ms"] = round((float(boat_time) + lead_s) * 1000)
         self._save(record)
         m.spawn(self._plan(record, scenario, apply=action == "apply"))
 
@@ -298,7 +310,7 @@ class ReplanService:
             record.update(state="planned", error=NO_HOT_SWAP)
             return
         try:
-            mission = await swap(record["plan_id"])
+            mission = await swap(record["plan_id"], record["swap_at_ms"])
         except BoatError as exc:
             record.update(state="failed", error=str(exc))
             return

@@ -33,7 +33,7 @@ from typing import Any
 
 from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.runtime import tune_allocator
-from usvstation.scenario import Scenario
+from usvstation.scenario import Scenario, scenario_at
 from usvstation.services.hub import LiveHub
 from usvstation.store.db import Store, utc_now
 
@@ -91,6 +91,23 @@ def die_with_parent(station_pid: int) -> None:
                 pass
 
     threading.Thread(target=watch, name="station-watchdog", daemon=True).start()
+
+
+def scenario_from_boat(scenario: Scenario, row: dict[str, Any] | None,
+                       run_t0: float | None) -> Scenario:
+    """The scenario re-started from the boat's latest telemetry `row` (issue 12, re-plan
+    under way).
+
+    Position and hull heading in the ramp frame, speed over ground as the start speed; moving
+    obstacles are propagated to the boat's time since its run began at boat time `run_t0`
+    (0 outside a run). Raises ValueError (one line) when there is no usable telemetry.
+    """
+    if not row or row.get("x") is None or row.get("ramp_heading_deg") is None:
+        raise ValueError("from_boat: no telemetry with a ramp-frame position yet "
+                         "(is the boat connected and the scenario's origin set?)")
+    t = row["boat_time"] - run_t0 if row.get("run") is not None and run_t0 is not None else 0.0
+    return scenario_at(scenario, row["x"], row["y"], row["ramp_heading_deg"], row["speed"],
+                       max(float(t), 0.0))
 
 
 def outdated_by(planned: dict[str, Any], working: Scenario) -> list[str]:

@@ -147,6 +147,7 @@ class BoatProtocol:
         self.activations: list[tuple[float, int]] = []  # (uptime s, mission id) flown from
         self.telemetry_dropped = 0
         self.log: list[str] = []  # status texts, for the runner to print
+        self.last_notice: str | None = None  # the vehicle's standing notice, sent once
         self._text_budget_at = -math.inf
         self._swap_mission: ActiveMission | None = None
         self._urgent = bytearray()
@@ -494,6 +495,11 @@ class BoatProtocol:
         expiry, failsafe, staging expiry, telemetry and heartbeat on a fixed boat-time grid."""
         dt_link = max(0.0, now - self.last_now)
         self.last_now = now
+        notice = getattr(self.vehicle, "notice", None)  # e.g. current beyond what HOLD can hold
+        if notice != self.last_notice:
+            self.last_notice = notice
+            if notice:
+                self._text(mav.MAV_SEVERITY_WARNING, notice[:50], now)
         target = self.boat_time + dt_link * self.cfg.sim_speed
         while True:  # each timer at its own boat-time instant, in order
             st = self.staging

@@ -39,7 +39,8 @@ async def run_sim(args: argparse.Namespace) -> int:
     config = BoatConfig(boat_id=args.boat_id, station_id=args.station_id,
                         telemetry_hz=args.telemetry_hz, failsafe_timeout_s=args.failsafe_s,
                         sim_speed=args.sim_speed, baud=args.baud)
-    vehicle = make_vehicle(args.vehicle, scenario, args.sea_state)
+    vehicle = make_vehicle(args.vehicle, scenario, args.sea_state,
+                           guidance=args.guidance, controller=args.controller)
     nv = load_nv(args.nv_file) if args.nv_file is not None else None
     boat = make_boat(frame, config=config, seed=args.seed, vehicle=vehicle, key=key, nv=nv,
                      x=scenario.start.x, y=scenario.start.y,

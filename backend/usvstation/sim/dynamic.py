@@ -1,19 +1,23 @@
 """The simulated boat's default vehicle: the 3-DOF model steered by compensated AV-LOS.
 
-It puts issue 3's pieces behind the `Vehicle` interface of sim/vehicle.py:
+It puts the tracking pieces behind the `Vehicle` interface of sim/vehicle.py:
 the vessel model (`dynamics.Vessel`, the Otter by default) in the scenario's
-current and wind (and waves when asked), AV-LOS guidance with the
-disturbance compensation of paper 000 section 3.1 (`CompensatedAVLOS`,
-every 0.2 s) and the PID autopilot (every 0.05 s), as in the tracking bench.
+current and wind (and waves when asked), a guidance law (compensated AV-LOS
+by default, every 0.2 s) and an autopilot (every 0.05 s), as in the
+tracking bench. Guidance and autopilot see only a `Measurement` (GNSS
+position, COG/SOG, heading, yaw rate) and their own thrust; the drift they
+compensate comes from an online `DriftObserver`, never from the simulator's
+environment.
 
 The mission clock runs only while the boat tracks: hold and shore-assisted
 guidance stop it, resume continues from where it stopped (AV-LOS then
-speeds up to make up lost ground). Holding first lets the boat coast to
-rest (below 0.3 m/s), then keeps station there: it steers back at low speed
-when it drifts more than 3 m from where it stopped. The
-mission is complete when the boat passes the last waypoint (for a recovery:
-reaches the ramp end); it then stops its propellers and, on a recovery ramp,
-is held there (the model stops moving; boat time goes on).
+speeds up to make up lost ground). HOLD (and READY, before start) keeps
+station on the point where the command came (`StationKeeper`: position
+over ground, weathervaning into the estimated current); when the current
+is beyond what the boat can hold, `notice` says so. The mission is complete
+when the boat passes the last waypoint (for a recovery: reaches the ramp
+end); it then stops its propellers and, on a recovery ramp, is held there
+(the model stops moving; boat time goes on).
 """
 
 from __future__ import annotations
@@ -22,25 +26,29 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from usvstation.control import Autopilot
+from usvstation.control.select import CONTROLLERS, make_controller
 from usvstation.dynamics import Environment, ThrustCommand, Vessel, VesselState, otter
 from usvstation.dynamics.params import VesselParams
-from usvstation.guidance import CompensatedAVLOS, DisturbancePredictor, Trajectory
+from usvstation.guidance import Trajectory
+from usvstation.guidance.compensation import EstimatedDrift
+from usvstation.guidance.observer import DriftObserver, Measurement
+from usvstation.guidance.select import GUIDANCE_METHODS, make_guidance
+from usvstation.guidance.station import StationKeeper
 from usvstation.sim.vehicle import VehicleState, Waypoint, checked_mission, cross_track_error
 
 CONTROL_PERIOD = 0.05  # s, autopilot and model
 GUIDANCE_PERIOD = 0.2  # s, AV-LOS (paper 000 sec. 4.2 uses 0.2 s)
 LOOKAHEAD = 8.0  # m, four Otter lengths (docs/tracking.md)
 OVERRUN = 15.0  # m of path past the ramp end, so the boat drives on up the ramp
-HOLD_RADIUS = 3.0  # m, station-keeping dead band
-HOLD_SPEED = 0.8  # m/s, at most, when returning to the hold point
-REST_SPEED = 0.3  # m/s, a holding boat has come to rest below this
+HOLD_RADIUS = 3.0  # m, what a holding boat keeps within (tests, integration)
+OVER_CAPACITY = "current exceeds what the boat can hold: drifting"
 
 
 @dataclass(frozen=True)
 class _Command:
     heading: float
     speed: float
+    water_speed: float | None = None
 
 
 class DynamicVehicle:
@@ -48,17 +56,31 @@ class DynamicVehicle:
 
     def __init__(self, x: float, y: float, heading: float, *, speed: float = 0.0,
                  params: VesselParams | None = None, env: Environment | None = None,
-                 accel: float = 0.5) -> None:
+                 accel: float = 0.5, guidance: str = "avlos_comp",
+                 controller: str = "pid") -> None:
+        if guidance not in GUIDANCE_METHODS:
+            raise ValueError(f"guidance: unknown method {guidance!r}; "
+                             f"available: {', '.join(GUIDANCE_METHODS)}")
+        if controller not in CONTROLLERS:
+            raise ValueError(f"controller: unknown {controller!r}; "
+                             f"available: {', '.join(CONTROLLERS)}")
         self.params = params or otter()
         self.env = env or Environment.with_current(0.0, 0.0)
         self.accel = accel
+        self.guidance_method = guidance
+        self.controller = controller
         self.vessel = Vessel(self.params, VesselState(x, y, heading, speed))
-        self.pilot = Autopilot(self.params)
+        if speed > 0.0:
+            trim = 0.5 * self.params.surge_drag(speed)
+            self.vessel.set_initial_thrust(ThrustCommand(trim, trim))
+        self.pilot = make_controller(controller, self.params)
+        self.observer = DriftObserver(self.params)
+        self.drift = EstimatedDrift(self.observer)
+        self.keeper = StationKeeper(self.drift)
+        self.keeper.hold_at(x, y)
         self._wps: list[Waypoint] = []
-        self._guide: CompensatedAVLOS | None = None
+        self._guide = None
         self._phase = "idle"  # idle | track | hold | guided | done | aborted
-        self._hold_at = (x, y)
-        self._settled = True  # a holding boat has come to rest at _hold_at
         self._tau = 0.0  # mission time
         self._pending = 0.0  # boat time not yet simulated (less than one control period)
         self._next_guidance = 0.0
@@ -68,6 +90,8 @@ class DynamicVehicle:
         self._segment = 0
         self._complete = False
         self._idle_time = 0.0  # boat time spent held on the ramp (the model is frozen)
+        self._meas = Measurement.of(self.vessel.state)
+        self.observer.start(self._meas, self.vessel.thrust)
         self._state = self._report()
 
     # --- Vehicle interface --------------------------------------------------------
@@ -79,6 +103,13 @@ class DynamicVehicle:
     def phase(self) -> str:
         return self._phase
 
+    @property
+    def notice(self) -> str | None:
+        """A warning for the operator while station keeping cannot hold, else None."""
+        if self._phase in ("hold", "idle") and self.keeper.over_capacity:
+            return OVER_CAPACITY
+        return None
+
     def set_mission(self, waypoints: Sequence[Waypoint]) -> None:
         self._wps = checked_mission(waypoints)
         self._guide, self._complete, self._segment = None, False, 0
@@ -88,9 +119,9 @@ class DynamicVehicle:
         if len(self._wps) < 2:
             return
         traj = Trajectory.from_xyt([(w.x, w.y, w.t) for w in self._wps])
-        self._guide = CompensatedAVLOS(
-            traj, DisturbancePredictor(self.params, self.env), LOOKAHEAD,
-            speed_max=self.params.top_speed, accel=self.accel, overrun=OVERRUN,
+        self._guide = make_guidance(
+            self.guidance_method, traj, self.params, self.drift, lookahead=LOOKAHEAD,
+            accel=self.accel, overrun=OVERRUN,
         )
         self._tau, self._complete, self._command = 0.0, False, None
         self._next_guidance = 0.0
@@ -132,9 +163,10 @@ class DynamicVehicle:
 
     # --- internals ----------------------------------------------------------------------
     def _keep_station(self) -> None:
-        s = self.vessel.state
-        self._hold_at, self._phase = (s.x, s.y), "hold" if self._guide else "idle"
-        self._settled = math.hypot(*s.velocity) < REST_SPEED
+        s = self._meas
+        self.keeper.hold_at(s.x, s.y)
+        self._phase = "hold" if self._guide else "idle"
+        self.pilot.reset()
         if self._complete:
             self._phase = "done"
 
@@ -143,7 +175,8 @@ class DynamicVehicle:
             self._thrust = ThrustCommand(0.0, 0.0)
             self._idle_time += CONTROL_PERIOD
             return
-        s = self.vessel.state
+        s = self._meas = Measurement.of(self.vessel.state)
+        self.observer.update(s, (self._thrust.left, self._thrust.right), CONTROL_PERIOD)
         command = self._steer(s)
         if command is None:
             self._thrust = ThrustCommand(0.0, 0.0)
@@ -156,28 +189,20 @@ class DynamicVehicle:
             if self._passed_end():
                 self._complete = True
                 self._phase = "done"
-                self._hold_at = (self.vessel.state.x, self.vessel.state.y)
 
-    def _steer(self, s: VesselState) -> _Command | None:
+    def _steer(self, s: Measurement) -> _Command | None:
         if self._phase == "track" and self._guide is not None:
             if self._command is None or self._tau >= self._next_guidance - 1e-9:
                 cmd = self._guide.update(s, self._tau)
                 self._segment = cmd.segment
-                self._command = _Command(cmd.heading, cmd.speed)
+                self._command = _Command(cmd.heading, cmd.speed, cmd.water_speed)
                 self._next_guidance = self._tau + GUIDANCE_PERIOD
             return self._command
         if self._phase == "guided":
             return self._guided
         if self._phase in ("hold", "idle"):
-            if not self._settled:  # coast to rest, then hold where the boat stopped
-                self._hold_at = (s.x, s.y)
-                self._settled = math.hypot(*s.velocity) < REST_SPEED
-                return None
-            dx, dy = self._hold_at[0] - s.x, self._hold_at[1] - s.y
-            dist = math.hypot(dx, dy)
-            if dist <= HOLD_RADIUS:
-                return None
-            return _Command(math.atan2(dy, dx), min(HOLD_SPEED, 0.3 * dist))
+            c = self.keeper.update(s, s.t)
+            return None if c.idle else _Command(c.heading, c.speed, c.water_speed)
         return None  # done (on the ramp) or aborted: propellers stopped
 
     def _passed_end(self) -> bool:

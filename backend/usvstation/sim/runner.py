@@ -22,10 +22,12 @@ from usvstation.sim.vehicle import KinematicVehicle, Vehicle
 VEHICLES = ("dynamic", "kinematic")
 
 
-def make_vehicle(kind: str, scenario: Scenario, sea_state: int = 0) -> Vehicle:
+def make_vehicle(kind: str, scenario: Scenario, sea_state: int = 0,
+                 guidance: str = "avlos_comp", controller: str = "pid") -> Vehicle:
     """The simulated vehicle at the scenario's start pose.
 
-    'dynamic' (default): the 3-DOF Otter with compensated AV-LOS in the
+    'dynamic' (default): the 3-DOF Otter with `guidance` (compensated AV-LOS
+    by default) and `controller` (the PID autopilot by default) in the
     scenario's current and wind, plus waves of `sea_state` (0: none).
     'kinematic': follows the mission exactly (for protocol tests).
     """
@@ -43,7 +45,8 @@ def make_vehicle(kind: str, scenario: Scenario, sea_state: int = 0) -> Vehicle:
         if sea_state > 0 else None
     return DynamicVehicle(start.x, start.y, heading, speed=start.speed,
                           env=Environment.from_scenario(env, waves=waves),
-                          accel=scenario.vessel.accel_max)
+                          accel=scenario.vessel.accel_max, guidance=guidance,
+                          controller=controller)
 
 
 @dataclass

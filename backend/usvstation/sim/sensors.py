@@ -55,3 +55,32 @@ class Battery:
     @property
     def voltage(self) -> float:
         return self.full_v - (self.full_v - self.empty_v) * self.used_ah / self.capacity_ah
+
+
+@dataclass
+class NavSensors:
+    """The boat's own navigation sensors as guidance sees them: white errors on the GNSS
+    fix (`position_std_m` per axis), the GNSS velocity (`velocity_std_mps` per axis, so
+    COG/SOG are noisy too) and the compass (`heading_std_rad`); the gyro is exact.
+    Call it with a dynamics.VesselState to get a guidance.Measurement. Seeded, no I/O."""
+
+    position_std_m: float = 0.05  # RTK-class fix
+    velocity_std_mps: float = 0.05
+    heading_std_rad: float = math.radians(0.5)
+    seed: int = 0
+    _rng: np.random.Generator = field(init=False, repr=False)
+
+    def __post_init__(self) -> None:
+        self._rng = np.random.default_rng(self.seed)
+
+    def __call__(self, state):
+        from usvstation.guidance.observer import Measurement
+
+        ex, ey = self._rng.normal(0.0, self.position_std_m, 2)
+        nvx, nvy = self._rng.normal(0.0, self.velocity_std_mps, 2)
+        vx, vy = state.velocity
+        vx, vy = vx + nvx, vy + nvy
+        sog = math.hypot(vx, vy)
+        cog = math.atan2(vy, vx) if sog > 1e-9 else state.psi
+        psi = state.psi + float(self._rng.normal(0.0, self.heading_std_rad))
+        return Measurement(state.x + ex, state.y + ey, psi, sog, cog, state.r, state.t)

@@ -1,0 +1,174 @@
+"""Where the IGA's leg begins: the start itself, or the end of a turning run-out (issue 12).
+
+The IGA's encoding steps towards the goal along the planning frame's x axis
+(eq. 10), so its first leg cannot leave a boat that points away, and a
+recovery cannot start within a few metres of the ramp or behind it. Such a
+start gets a prefix: short legs at constant speed through the water, the hull
+turning by at most 0.6 turn_max per waypoint, first out to sea (recoveries
+that start too close in, behind or beside the ramp) and then round towards
+the goal until the remaining turn is small. The IGA plans the rest from the
+prefix's end, its first leg bound to the prefix's last heading. Prefix legs
+are checked against the inflated (and time-swept) obstacles exactly (eq. 9).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from usvstation.planning.options import IGAOptions
+from usvstation.planning.problem import StartState, sweep_moving
+from usvstation.planning.validate import MOVING_START_SPEED, current_vector
+from usvstation.planning.xyt import ObstacleField
+from usvstation.scenario import Scenario
+
+MAX_PREFIX_LEGS = 24
+ALIGNED = math.radians(60.0)  # a start course within this of the goal needs no prefix
+
+
+@dataclass(frozen=True)
+class Prefix:
+    """Waypoints from the start to where the IGA takes over (scenario frame, eq. 11 times)."""
+
+    x: list[float]
+    y: list[float]
+    t: list[float]
+    v: list[float]  # ground speed at each waypoint
+    end: StartState
+
+    @property
+    def legs(self) -> int:
+        return len(self.x) - 1
+
+
+def start_state(scenario: Scenario) -> StartState:
+    """The scenario's start; its heading binds the first leg when the boat moves."""
+    s, v = scenario.start, scenario.vessel
+    h = math.radians(s.heading_deg)
+    cx, cy = current_vector(scenario)
+    moving = s.speed >= MOVING_START_SPEED
+    ground = math.hypot(s.speed * math.cos(h) + cx, s.speed * math.sin(h) + cy) if moving \
+        else s.speed
+    course = ground_course(h, s.speed, cx, cy)
+    return StartState(s.x, s.y, h, float(np.clip(ground, v.speed_min, v.speed_max)),
+                      bound=moving, course=course)
+
+
+def ground_course(heading: float, water_speed: float, cx: float, cy: float) -> float:
+    """Course over ground of a hull at `heading` making `water_speed` in the current; the
+    heading itself when the current holds the boat (almost) still over ground."""
+    gx, gy = water_speed * math.cos(heading) + cx, water_speed * math.sin(heading) + cy
+    return heading if math.hypot(gx, gy) < 0.1 else math.atan2(gy, gx)
+
+
+def x_needed(opts: IGAOptions) -> float:
+    """A recovery's leg needs its start at least this far out along the ramp axis, m."""
+    return opts.approach_length + 2.0 * opts.d_sl + 5.0
+
+
+def needs_prefix(scenario: Scenario, opts: IGAOptions) -> bool:
+    s = scenario.start
+    if scenario.kind == "recovery" and s.x < x_needed(opts):
+        return True
+    if s.speed < MOVING_START_SPEED:
+        return False
+    h = math.radians(s.heading_deg)
+    cx, cy = current_vector(scenario)
+    course = ground_course(h, s.speed, cx, cy)
+    bearing = math.atan2(scenario.goal.y - s.y, scenario.goal.x - s.x)
+    return abs(math.remainder(course - bearing, 2 * math.pi)) > ALIGNED
+
+
+def prefixes(scenario: Scenario, opts: IGAOptions, margin: float) -> list[Prefix]:
+    """Collision-free run-outs for a start the IGA cannot leave directly, shortest first."""
+    field = _field(scenario, margin)
+    out = []
+    for side in (1.0, -1.0):
+        p = _steer(scenario, opts, side)
+        if p is not None and _free(p, field):
+            out.append(p)
+    return sorted(out, key=lambda p: p.end.t)
+
+
+def _steer(scenario: Scenario, opts: IGAOptions, side: float) -> Prefix | None:
+    v = scenario.vessel
+    s = scenario.start
+    cx, cy = current_vector(scenario)
+    water = float(np.clip(max(s.speed, 1.0), v.speed_min, v.speed_max))
+    if abs(complex(cx, cy)) >= water:
+        water = v.speed_max
+    step = 0.6 * math.radians(v.turn_max_deg)
+    leg = max(3.0, 2.0 * v.length, 2.0 * water, 4.0 * math.hypot(cx, cy))
+    h = math.radians(s.heading_deg) if s.speed >= MOVING_START_SPEED else None
+    x, y = s.x, s.y
+    recovery = scenario.kind == "recovery"
+    x_out = x_needed(opts) + 0.5 * abs(s.y) if recovery and s.x < x_needed(opts) else None
+    xs, ys, hulls = [x], [y], []
+    for _ in range(MAX_PREFIX_LEGS):
+        if x_out is not None and x < x_out:
+            target = 0.0
+        else:
+            x_out = None
+            target = _crab(math.atan2(scenario.goal.y - y, scenario.goal.x - x), water, cx, cy)
+            if h is not None and abs(math.remainder(h - target, 2 * math.pi)) <= step / 2:
+                break
+        if h is None:
+            h = target
+        else:
+            err = math.remainder(target - h, 2 * math.pi)
+            if abs(err) <= step:
+                h = target
+            else:
+                h += (side if abs(err) > math.pi - step else math.copysign(1.0, err)) * step
+        gx, gy = water * math.cos(h) + cx, water * math.sin(h) + cy
+        g = math.hypot(gx, gy)
+        run = leg
+        if x_out is not None and h == target and gx > 0.0:
+            run = max(leg, min(x_out - x, 200.0) * g / gx)  # straight out in one leg
+        x, y = x + gx / g * run, y + gy / g * run
+        xs.append(x)
+        ys.append(y)
+        hulls.append(h)
+    else:
+        return None
+    if len(xs) == 1:
+        return None
+    speeds = []
+    for i in range(len(xs) - 1):
+        hh = hulls[i]
+        speeds.append(math.hypot(water * math.cos(hh) + cx, water * math.sin(hh) + cy))
+    speeds.append(speeds[-1])
+    speeds = [float(np.clip(sp, v.speed_min, v.speed_max)) for sp in speeds]
+    t = [0.0]
+    for i in range(len(xs) - 1):
+        d = math.hypot(xs[i + 1] - xs[i], ys[i + 1] - ys[i])
+        t.append(t[-1] + 2.0 * d / (speeds[i] + speeds[i + 1]))
+    hh = hulls[-1]
+    course = math.atan2(water * math.sin(hh) + cy, water * math.cos(hh) + cx)
+    end = StartState(xs[-1], ys[-1], hh, speeds[-1], t[-1], bound=True, course=course)
+    return Prefix(xs, ys, t, speeds, end)
+
+
+def _crab(course: float, water: float, cx: float, cy: float) -> float:
+    """Hull heading that makes good `course` over ground at `water` m/s in the current."""
+    across = -cx * math.sin(course) + cy * math.cos(course)
+    return course - math.asin(max(-1.0, min(1.0, across / water)))
+
+
+def _field(scenario: Scenario, margin: float) -> ObstacleField:
+    obs = scenario.obstacles
+    centre = np.array([[o.x, o.y] for o in obs], dtype=float).reshape(-1, 2)
+    velocity = np.array([[o.vx, o.vy] for o in obs], dtype=float).reshape(-1, 2)
+    radius = np.array([o.radius for o in obs], dtype=float)
+    c, w, r, infl, src = sweep_moving(centre, velocity, radius, radius + margin,
+                                      scenario.vessel.time_margin_s)
+    return ObstacleField(c, w, r, infl, src)
+
+
+def _free(p: Prefix, field: ObstacleField) -> bool:
+    if field.count == 0:
+        return True
+    x, y, t = (np.asarray(a) for a in (p.x, p.y, p.t))
+    return not bool(field.hits(x[:-1], y[:-1], t[:-1], x[1:], y[1:], t[1:]).any())

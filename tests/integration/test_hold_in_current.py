@@ -1,0 +1,72 @@
+"""HOLD through the server keeps station in a current (issue 13), on boat time."""
+
+import math
+import statistics
+import time
+
+from stationproc import StationProcess
+
+SIM_SPEED = "10"
+
+
+def _telemetry(c, run: int) -> list[dict]:
+    return c.get("/api/telemetry", params={"run": run, "limit": 100000}).json()
+
+
+def _wait_boat_time(c, run: int, until: float, timeout: float) -> list[dict]:
+    """Poll the run's telemetry until it reaches boat time `until` (wall timeout only as a
+    guard against a hung station, never asserted as a figure)."""
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        rows = _telemetry(c, run)
+        if rows and rows[-1]["boat_time"] >= until:
+            return rows
+        time.sleep(0.2)
+    raise AssertionError(f"run {run} did not reach boat time {until:g} s")
+
+
+def test_after_hold_the_boat_stays_within_3_m_for_60_s_in_half_a_metre_per_second(tmp_path):
+    data = tmp_path / "data"
+    st = StationProcess(data, "--sim-speed", SIM_SPEED)
+    try:
+        scenario = st.client.get("/api/scenario").json()
+        scenario["environment"].update(current_speed=0.5, current_dir_deg=90.0)
+        assert st.client.put("/api/scenario", json=scenario).status_code == 200
+    finally:
+        st.stop()
+    st = StationProcess(data, "--sim-speed", SIM_SPEED)  # the simulated sea takes the current
+    try:
+        c = st.client
+        assert c.get("/api/scenario").json()["environment"]["current_speed"] == 0.5
+        plan = st.wait_plan(c.post("/api/plans", json={"seed": 1}).json()["id"])
+        assert plan["status"] == "done"
+        r = c.post("/api/missions", json={"plan_id": plan["id"]})
+        mission = st.wait(f"/api/missions/{r.json()['id']}", "state", ("uploading",), 30)
+        assert mission["state"] == "verified"
+        assert c.post("/api/boat/command", json={"command": "start"}).json()["state"] == "RUNNING"
+        mission = st.wait(f"/api/missions/{mission['id']}", "run", (None,), 30)
+        run = mission["run"]
+        t0 = _wait_boat_time(c, run, 0.0, 30)[0]["boat_time"]
+        _wait_boat_time(c, run, t0 + 8.0, 60)  # under way on the plan
+        ack = c.post("/api/boat/command", json={"command": "hold"}).json()
+        assert ack["result"] == "ACCEPTED" and ack["state"] == "HOLD"
+        seen = _telemetry(c, run)[-1]["boat_time"]
+        rows = _wait_boat_time(c, run, seen + 5.0, 60)
+        # the first fix the boat reports in HOLD: where it was told to hold (within 0.2 s)
+        at_hold = next(x for x in rows if x["mode"] == "HOLD")
+        t_hold = at_hold["boat_time"]
+        rows = _wait_boat_time(c, run, t_hold + 30.0 + 60.0, 120)
+        assert all(x["mode"] == "HOLD" for x in rows if x["boat_time"] >= t_hold)
+        window = [x for x in rows if t_hold + 30.0 <= x["boat_time"] <= t_hold + 90.0]
+        assert window[-1]["boat_time"] - window[0]["boat_time"] >= 59.5
+        # Telemetry positions carry the simulated GNSS error (0.8 m wandering bias, 0.4 m
+        # white): average each second of fixes, then measure the spread about the station.
+        xs = [statistics.fmean(x["x"] for x in window[i:i + 5]) for i in range(len(window) - 4)]
+        ys = [statistics.fmean(x["y"] for x in window[i:i + 5]) for i in range(len(window) - 4)]
+        cx, cy = statistics.median(xs), statistics.median(ys)
+        # it holds where HOLD came, not somewhere down-current
+        assert math.hypot(cx - at_hold["x"], cy - at_hold["y"]) < 3.0
+        assert max(math.hypot(x - cx, y - cy) for x, y in zip(xs, ys, strict=True)) <= 3.0
+        assert c.get("/api/boat").json()["boat"]["state"] == "HOLD"
+    finally:
+        st.stop()
