@@ -24,8 +24,8 @@ from usvstation.scenario import load_scenario
 from usvstation.serveproc import SCRIPT
 
 LONG_PLAN = {**load_scenario("case1").model_dump(mode="json"),
-             "planner": {"population": 4000, "generations_max": 100_000,
-                         "stall_generations": 100_000}}
+             "planner": {"population": 1000, "generations_max": 5000,
+                         "stall_generations": 5000, "time_budget_s": 600.0}}
 
 
 def wait_for(predicate, timeout: float, what: str):
