@@ -7,7 +7,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed-stamp
 NODE_STAMP := frontend/node_modules/.installed-stamp
 
-.PHONY: setup run serve test lint bench clean
+.PHONY: setup run serve test test-fast lint bench clean
 
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -32,6 +32,10 @@ serve: run
 
 test: setup
 	$(BIN)/python -m pytest
+
+# Unit tests only (no servers, browsers or ptys): under a minute.
+test-fast: setup
+	$(BIN)/python -m pytest tests/unit -q
 
 lint: setup
 	$(BIN)/ruff check backend tests

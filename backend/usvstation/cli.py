@@ -85,6 +85,21 @@ def build_parser() -> argparse.ArgumentParser:
     serve.add_argument("--data-dir", type=Path, help="database and token folder (default ./data)")
     serve.add_argument("--token", help="access token (default: generated into the data dir)")
     serve.add_argument("--viser-port", type=int, help="3D view port (default 8080)")
+    serve.add_argument("--viewer-token", help="read-only token: telemetry, runs, exports, "
+                       "plans, the websocket (default: none)")
+    serve.add_argument("--allowed-hosts", type=lambda v: [h for h in v.split(",") if h],
+                       help="comma-separated Host names accepted besides IP addresses, "
+                       "localhost and --host (DNS-rebinding guard)")
+    serve.add_argument("--allowed-origins", type=lambda v: [h for h in v.split(",") if h],
+                       help="comma-separated websocket Origins accepted besides the station's")
+    serve.add_argument("--max-body-bytes", type=int, help="request body limit (default 1 MiB)")
+    serve.add_argument("--max-ws-clients", type=int, help="live websocket clients (default 64)")
+    serve.add_argument("--plan-timeout-s", type=float,
+                       help="wall-clock limit of one plan (default 10 s)")
+    serve.add_argument("--plan-memory-mb", type=int,
+                       help="memory limit of a plan worker (default 2048 MB)")
+    serve.add_argument("--plan-queue", type=int,
+                       help="plans queued or running at most (default 32; then 429)")
     serve.add_argument("--charts", dest="charts_dir", type=Path,
                        help="folder of offline chart packages (*.mbtiles) for the console's map")
     serve.add_argument("--sim-speed", type=float,
@@ -269,19 +284,22 @@ def _cmd_serve(args: argparse.Namespace) -> int:
 
     flags = {k: getattr(args, k) for k in ("host", "port", "link", "baud", "data_dir", "token",
                                            "viser_port", "sim_speed", "nmea", "replan",
-                                           "boat_id", "link_key", "insecure_link")
-             if getattr(args, k) is not None}
+                                           "boat_id", "link_key", "insecure_link",
+                                           "viewer_token", "allowed_hosts", "allowed_origins",
+                                           "max_body_bytes", "max_ws_clients", "plan_timeout_s",
+                                           "plan_memory_mb", "plan_queue")
+             if getattr(args, k, None) is not None}
     if args.charts_dir is not None:
         flags["charts_dir"] = args.charts_dir
     try:
         settings = Settings(**flags)
     except ValidationError as exc:
         raise CliError(f"invalid setting: {format_validation_error(exc)}", EXIT_INVALID) from None
-    try:
-        from usvstation.server import serve
+    from usvstation.server import StartError, serve
 
+    try:
         return serve(settings, announce=lambda msg: print(msg, flush=True))
-    except ExposureError as exc:
+    except (ExposureError, StartError) as exc:
         raise CliError(str(exc), EXIT_INVALID) from None
     except LinkKeyError as exc:
         raise CliError(str(exc), EXIT_INVALID) from None

@@ -32,6 +32,20 @@ class Settings(BaseSettings):
     plan_workers: int = Field(2, ge=1, le=32)
     heartbeat_timeout_s: float = Field(3.0, gt=0.0)
     telemetry_hz: float = Field(5.0, gt=0.0, le=50.0)
+    viewer_token: str | None = Field(None, description="read-only token (telemetry, runs, "
+                                     "exports, plans, websocket); default: none")
+    allowed_hosts: list[str] = Field(default_factory=list, description="Host header names "
+                                     "accepted besides IP addresses, localhost and --host")
+    allowed_origins: list[str] = Field(default_factory=list, description="websocket Origins "
+                                       "accepted besides the station's own")
+    max_body_bytes: int = Field(1 << 20, ge=1024, le=1 << 30)
+    max_ws_clients: int = Field(64, ge=1, le=10_000)
+    max_connections: int = Field(2048, ge=16, le=100_000)
+    header_timeout_s: float = Field(10.0, gt=0.0, le=300.0)
+    keep_alive_s: float = Field(5.0, gt=0.0, le=300.0)
+    plan_timeout_s: float = Field(10.0, gt=0.0, le=3600.0)
+    plan_memory_mb: int = Field(2048, ge=512, le=1 << 20)
+    plan_queue: int = Field(32, ge=1, le=10_000)
     nmea: list[str] = Field(
         default_factory=list, description="ship-input sources (NMEA 0183, AIS): "
         "udp://HOST:PORT, tcp://HOST:PORT, serial:///dev/DEVICE?baud=N or a device path")

@@ -3,17 +3,82 @@
 from __future__ import annotations
 
 import asyncio
+import contextlib
+import os
+import resource
 import socket
+import sqlite3
 from collections.abc import Callable
+from pathlib import Path
 
 import uvicorn
+from uvicorn.protocols.http.httptools_impl import HttpToolsProtocol
 
 from usvstation.api.app import create_app
 from usvstation.api.console import default_frontend_dir, frontend_problem
+from usvstation.api.guard import install_log_redaction
 from usvstation.config import Settings
 from usvstation.station import Station
 
 SHUTDOWN_GRACE_S = 3  # SIGTERM: connections get this long, then telemetry is flushed
+WS_PING_S = 10.0  # websocket ping interval and timeout
+WS_MAX_MESSAGE = 1 << 20
+
+
+class StartError(Exception):
+    """The station cannot start; the message is one line for stderr (exit 2)."""
+
+
+class HeaderTimeoutProtocol(HttpToolsProtocol):
+    """uvicorn's HTTP protocol, closing a connection whose first request's headers are not
+    complete within `header_timeout_s` (half-open and slow-header connections)."""
+
+    header_timeout_s = 10.0
+
+    def connection_made(self, transport: asyncio.Transport) -> None:  # type: ignore[override]
+        super().connection_made(transport)
+        self._header_timer = self.loop.call_later(self.header_timeout_s, self._header_timeout)
+
+    def _header_timeout(self) -> None:
+        upgraded = self.transport.get_protocol() is not self  # now a websocket
+        if self.cycle is None and not upgraded and not self.transport.is_closing():
+            self.transport.close()
+
+    def connection_lost(self, exc: Exception | None) -> None:
+        self._header_timer.cancel()
+        super().connection_lost(exc)
+
+
+def preflight(settings: Settings) -> None:
+    """StartError for what would fail later: the data dir, the serial device."""
+    data = settings.data_dir
+    try:
+        data.mkdir(parents=True, exist_ok=True)
+        probe = data / f".write-probe-{os.getpid()}"
+        with probe.open("wb") as f:
+            f.write(b"x" * 4096)
+            f.flush()
+            os.fsync(f.fileno())
+        probe.unlink()
+    except OSError as exc:
+        raise StartError(f"data dir {data}: {exc.strerror or exc}") from None
+    link = settings.link
+    if link != "sim" and "://" not in link and not Path(link).exists():
+        raise StartError(f"serial device {link} not found (--link)")
+
+
+def raise_fd_limit() -> None:
+    """Allow as many open connections as the hard limit lets (1024 is a common default)."""
+    with contextlib.suppress(ValueError, OSError):
+        soft, hard = resource.getrlimit(resource.RLIMIT_NOFILE)
+        want = 65536 if hard == resource.RLIM_INFINITY else min(hard, 65536)
+        if soft < want:
+            resource.setrlimit(resource.RLIMIT_NOFILE, (want, hard))
+
+
+def _one_line(exc: BaseException) -> str:
+    text = str(exc).strip().splitlines()
+    return f"{type(exc).__name__}: {text[0]}" if text else type(exc).__name__
 
 
 def console_url(settings: Settings, token: str) -> str:
@@ -37,34 +102,58 @@ def bind(host: str, port: int) -> socket.socket:
 
 
 def serve(settings: Settings, announce: Callable[[str], None] = print) -> int:
-    """Start the station and block until SIGINT or SIGTERM; returns the exit code."""
-    station = Station(settings)
+    """Start the station and block until SIGINT or SIGTERM; returns the exit code.
+
+    Every start-up failure raises StartError (one line; the CLI exits 2)."""
+    preflight(settings)
+    try:
+        station = Station(settings)
+    except (OSError, sqlite3.Error) as exc:
+        raise StartError(f"data dir {settings.data_dir}: {_one_line(exc)}") from None
     try:
         sock = bind(settings.host, settings.port)
     except OSError as exc:
-        announce(f"usv-station: cannot listen on {settings.host}:{settings.port}: {exc.strerror}")
-        return 1
+        raise StartError(f"cannot listen on {settings.host}:{settings.port}: "
+                         f"{exc.strerror}") from None
+    raise_fd_limit()
+    install_log_redaction()
     settings = settings.model_copy(update={"port": sock.getsockname()[1]})
     app = create_app(station)
+    HeaderTimeoutProtocol.header_timeout_s = settings.header_timeout_s
     config = uvicorn.Config(app, log_level="info", lifespan="on",
-                            timeout_graceful_shutdown=SHUTDOWN_GRACE_S)
+                            timeout_graceful_shutdown=SHUTDOWN_GRACE_S,
+                            timeout_keep_alive=settings.keep_alive_s,
+                            limit_concurrency=settings.max_connections, backlog=4096,
+                            http=HeaderTimeoutProtocol, ws_ping_interval=WS_PING_S,
+                            ws_ping_timeout=WS_PING_S, ws_max_size=WS_MAX_MESSAGE)
     server = uvicorn.Server(config)
     link = "simulated boat (pty)" if settings.link == "sim" else settings.link
     announce(f"usv-station: data in {settings.data_dir.resolve()}, boat link: {link}")
     problem = frontend_problem(settings.frontend_dir or default_frontend_dir())
     if problem is not None:
         announce(f"usv-station: warning: {problem}")
+    failed: list[str] = []
 
     async def run() -> None:
+        try:
+            await station.start()  # here, not in the lifespan: a failure is one line
+        except Exception as exc:
+            failed.append(_one_line(exc))
+            with contextlib.suppress(Exception):
+                await station.stop()
+            return
         task = asyncio.create_task(server.serve(sockets=[sock]))
         while not server.started and not task.done():
             await asyncio.sleep(0.05)
         if server.started:
-            announce(f"usv-station: 3D view http://{_host(settings)}:{station.view.port}/")
+            announce(f"usv-station: 3D view http://127.0.0.1:{station.view.port}/ "
+                     f"(loopback only; browsers use {console_url(settings, '')}3d/)")
             announce(f"usv-station: console {console_url(settings, station.token)}")
         await task
 
     asyncio.run(run())
+    if failed:
+        raise StartError(f"cannot start: {failed[0]}")
     return 0 if server.started else 1
 
 

@@ -4,11 +4,15 @@ from __future__ import annotations
 
 import asyncio
 import json
+import logging
+import time
+from collections import deque
 from typing import Any
 
-from usvstation.config import Settings, resolve_token
+from usvstation.api.auth import Tokens
+from usvstation.config import ExposureError, Settings, resolve_token
 from usvstation.link.protocol import BoatReport
-from usvstation.scenario import Scenario, bundled_scenario_dir, parse_scenario
+from usvstation.scenario import Origin, Scenario, bundled_scenario_dir, parse_scenario
 from usvstation.services.alerts import LinkAlerts
 from usvstation.services.boat import BoatService
 from usvstation.services.hub import LiveHub
@@ -20,6 +24,49 @@ from usvstation.store.db import Store
 from usvstation.viz.view import ThreeDView
 
 DEFAULT_SCENARIO = "case1"
+LAG_PROBE_S = 0.05  # the loop-lag monitor wakes this often
+LAG_WINDOW_S = 60.0
+log = logging.getLogger("usvstation")
+
+
+class LoopLagMonitor:
+    """How late the event loop wakes a task that sleeps LAG_PROBE_S: the worst of the last
+    minute and of the whole run (a blocking call shows up as its own length)."""
+
+    def __init__(self) -> None:
+        self.samples: deque[tuple[float, float]] = deque()  # (monotonic time, lag s)
+        self.worst_ever = 0.0
+        self._task: asyncio.Task | None = None
+
+    def start(self) -> None:
+        self._task = asyncio.get_running_loop().create_task(self._run(), name="loop-lag")
+
+    def stop(self) -> None:
+        if self._task is not None:
+            self._task.cancel()
+
+    async def _run(self) -> None:
+        while True:
+            t0 = time.monotonic()
+            await asyncio.sleep(LAG_PROBE_S)
+            now = time.monotonic()
+            self.record(now, max(0.0, now - t0 - LAG_PROBE_S))
+
+    def record(self, now: float, lag: float) -> None:
+        self.worst_ever = max(self.worst_ever, lag)
+        while self.samples and (self.samples[0][0] < now - LAG_WINDOW_S
+                                or self.samples[-1][1] <= lag):
+            if self.samples[0][0] < now - LAG_WINDOW_S:
+                self.samples.popleft()
+            else:
+                self.samples.pop()
+        self.samples.append((now, lag))  # decreasing lags: the head is the window's worst
+
+    def worst_last_minute(self) -> float:
+        cutoff = time.monotonic() - LAG_WINDOW_S
+        while self.samples and self.samples[0][0] < cutoff:
+            self.samples.popleft()
+        return self.samples[0][1] if self.samples else 0.0
 
 
 class Station:
@@ -28,10 +75,20 @@ class Station:
     def __init__(self, settings: Settings) -> None:
         self.settings = settings
         self.token = resolve_token(settings)
+        viewer = settings.viewer_token
+        if viewer is not None and (not viewer or viewer == self.token):
+            raise ExposureError("--viewer-token must be non-empty and differ from the operator "
+                                "token")
+        self.tokens = Tokens(self.token, viewer)
         self.store = Store(settings.data_dir)
         self.hub = LiveHub()
-        self.plans = PlanService(self.store, self.hub, settings.plan_workers)
-        self.view = ThreeDView(settings.host, settings.viser_port)
+        self.plans = PlanService(self.store, self.hub, settings.plan_workers,
+                                 timeout_s=settings.plan_timeout_s,
+                                 memory_mb=settings.plan_memory_mb, queue_max=settings.plan_queue)
+        self.view = ThreeDView("127.0.0.1", settings.viser_port)  # served to browsers at /3d/
+        self.lag = LoopLagMonitor()
+        self._watch: asyncio.Task | None = None
+        self.started = self.stopped = False
         self.boat = BoatService(settings, self.store, self.hub, self.plans, self.view)
         self.world = WorldService(self.hub, settings.nmea, simulate=settings.link == "sim",
                                   sim_speed=settings.sim_speed)
@@ -41,16 +98,28 @@ class Station:
         self.link_alerts = LinkAlerts(self.monitor.raise_alert)
 
     async def start(self) -> None:
+        """Start everything (once; the server's lifespan calls it again harmlessly)."""
+        if self.started:
+            return
+        self.started = True
+        self.lag.start()
         self.store.start()
         await self.plans.start()
         scenario = await self.working_scenario()
         await asyncio.to_thread(self.view.start)
         self.view.show_scenario(scenario)
+        if scenario.origin is None:
+            origin = await self.default_origin()
+            log.warning("usv-station: warning: the working scenario %r has no origin; the boat "
+                        "link uses the default origin %.6f, %.6f, ramp bearing %.1f deg",
+                        scenario.name, origin.lat, origin.lon, origin.ramp_bearing_deg)
+            scenario = scenario.model_copy(update={"origin": origin})
         await self.world.start(scenario)
         await self.boat.start(scenario)
         if self.boat.link is not None:
             self.boat.link.add_listener(self.link_alerts.on_link_event)
             self.boat.link.add_listener(self._publish_heartbeat)
+        self._watch = asyncio.get_running_loop().create_task(self._watch_health())
 
     def _publish_heartbeat(self, ev: object) -> None:
         """Each boat report (USV_MISSION_STATE, about 1 Hz) to the live clients with the
@@ -62,6 +131,12 @@ class Station:
 
     async def stop(self) -> None:
         """Close the link, stop plan workers, flush telemetry; the boat is sent nothing."""
+        if self.stopped:
+            return
+        self.stopped = True
+        if self._watch is not None:
+            self._watch.cancel()
+        self.lag.stop()
         await self.monitor.stop()
         await self.world.stop()
         await self.boat.stop()
@@ -76,6 +151,25 @@ class Station:
             data = json.loads(path.read_text(encoding="utf-8"))
         return parse_scenario(data)
 
+    @staticmethod
+    async def default_origin() -> Origin:
+        """The bundled default scenario's origin, for a working scenario that has none."""
+        path = bundled_scenario_dir() / f"{DEFAULT_SCENARIO}.json"
+        data = json.loads(await asyncio.to_thread(path.read_text, encoding="utf-8"))
+        return Origin(**data["origin"])
+
+    async def _watch_health(self) -> None:
+        """Publish a `health` event on the websocket whenever the status or its reason changes."""
+        last = None
+        while True:
+            h = self.health()
+            now = (h["status"], h["reasons"])
+            if now != last:
+                self.hub.publish("health", {"status": h["status"], "reasons": h["reasons"],
+                                            "telemetry_writer": h["telemetry_writer"]})
+                last = now
+            await asyncio.sleep(0.5)
+
     async def set_working_scenario(self, scenario: Scenario) -> None:
         await asyncio.to_thread(self.store.set_setting, "scenario",
                                 scenario.model_dump(mode="json"))
@@ -84,14 +178,23 @@ class Station:
         self.hub.publish("scenario", {"name": scenario.name})
 
     def health(self) -> dict[str, Any]:
+        """Station health, no boat data: status ok or degraded with the reasons."""
         w = self.store.writer
+        reasons = []
+        if w.error is not None:
+            reasons.append(f"telemetry writer: {w.error}")
+        plans = self.plans.health()
+        if plans["workers_alive"] == 0 and self.plans.started:
+            reasons.append("no plan worker alive")
         return {
-            "status": "ok" if w.error is None else "degraded",
+            "status": "degraded" if reasons else "ok",
+            "reasons": reasons,
             "telemetry_writer": {"received": w.stats.received, "committed": w.stats.committed,
-                                 "error": None if w.error is None else repr(w.error)},
-            "plans": {s: sum(1 for j in self.plans.jobs.values() if j["status"] == s)
-                      for s in ("queued", "running")},
+                                 "queued": w.queued, "dropped": w.stats.dropped,
+                                 "retries": w.stats.retries, "error": w.error},
+            "plans": plans,
             "websocket_clients": len(self.hub.subscribers),
             "link_up": self.boat.link_up,
-            "viser_port": self.view.port,
+            "loop_lag_ms": {"worst_last_minute": round(1000 * self.lag.worst_last_minute(), 1),
+                            "worst_since_start": round(1000 * self.lag.worst_ever, 1)},
         }

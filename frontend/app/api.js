@@ -1,4 +1,4 @@
-// The station's HTTP API: JSON requests with the bearer token on every change,
+// The station's HTTP API: JSON requests with the station's cookie or a typed bearer token,
 // and errors turned into one readable line for the control that caused them.
 
 const TOKEN_KEY = 'usv-station-token';
@@ -17,8 +17,15 @@ export function getToken() {
   return sessionStorage.getItem(TOKEN_KEY) ?? '';
 }
 
-export function setToken(token) {
+/** Keep a typed token for this tab and trade it for the station's HttpOnly cookie, which the
+ * websocket, downloads and the 3D view need (they cannot send an Authorization header). */
+export async function setToken(token) {
   sessionStorage.setItem(TOKEN_KEY, token.trim());
+  try {
+    await fetch(`/?token=${encodeURIComponent(token.trim())}`, { redirect: 'manual', cache: 'no-store' });
+  } catch {
+    // the header still carries the token for API requests
+  }
 }
 
 export class ApiError extends Error {
@@ -55,10 +62,8 @@ export function describeError(status, body, text) {
 export async function api(method, path, body) {
   const headers = { Accept: 'application/json' };
   if (body !== undefined) headers['Content-Type'] = 'application/json';
-  if (method !== 'GET') {
-    const token = getToken();
-    if (token) headers.Authorization = `Bearer ${token}`;
-  }
+  const token = getToken(); // else the station's cookie (set from the printed console URL)
+  if (token) headers.Authorization = `Bearer ${token}`;
   let response;
   try {
     response = await fetch(path, {

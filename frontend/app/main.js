@@ -24,9 +24,9 @@ async function linkViser() {
   try {
     const health = await api.get('/api/health');
     if (health.viser_port) {
-      link.href = `${location.protocol}//${location.hostname}:${health.viser_port}/`;
+      link.href = '/3d/'; // viser, served by the station behind the same token
       link.removeAttribute('aria-disabled');
-      link.title = `viser on port ${health.viser_port}`;
+      link.title = '3D view (viser) at /3d/';
     } else {
       link.textContent = '3D view: not running';
     }

@@ -43,9 +43,12 @@ def wait_until_moved(page, before, pixels, timeout=20.0):
 
 def test_plan_upload_run_and_download(page, station, artifacts):
     open_console(page, station)
-    # the token moved from the address bar into session storage
+    # the station traded the token in the address bar for an HttpOnly, SameSite=Strict cookie
     assert "token" not in page.url
-    assert page.evaluate("sessionStorage.getItem('usv-station-token')") == station.token
+    (cookie,) = [c for c in page.context.cookies() if c["name"] == "usv_token"]
+    assert cookie["value"] == station.token and cookie["httpOnly"]
+    assert cookie["sameSite"] == "Strict"
+    assert "usv_token" not in page.evaluate("document.cookie")
     expect(page.locator("#link-state")).to_contain_text("link up")
     expect(page.locator("#frames-lost")).to_have_text("0")
     expect(page.locator("#hb-age")).to_have_text(re.compile(r"^\d\.\d$"))
@@ -136,7 +139,7 @@ def test_plan_upload_run_and_download(page, station, artifacts):
 def test_the_3d_view_opens_from_the_console(page, station, artifacts):
     open_console(page, station)
     link = page.locator("#viser-link")
-    expect(link).to_have_attribute("href", station.viser_url + "/")
+    expect(link).to_have_attribute("href", "/3d/")  # viser, proxied behind the same token
     with page.expect_popup() as popup:
         link.click()
     view = popup.value
@@ -151,8 +154,8 @@ def test_the_3d_view_opens_from_the_console(page, station, artifacts):
 
 
 def test_api_errors_show_next_to_their_control(page, station):
-    page.goto(station.url + "/")  # no token in the address
-    expect(page.locator("#live-state")).to_have_text("live: connected")
+    page.context.clear_cookies()
+    page.goto(station.url + "/")  # no token in the address, no cookie
     page.evaluate("sessionStorage.clear()")
     page.click("#cmd-hold")
     expect(page.locator("#command-error")).to_contain_text("bearer token")
@@ -160,12 +163,15 @@ def test_api_errors_show_next_to_their_control(page, station):
     # the token entered under Settings is sent from then on
     page.fill("#token", station.token)
     page.click("#token-form button")
+    expect(page.locator("#live-state")).to_have_text("live: connected", timeout=30_000)
+    page.reload()  # the cookie now set, the console loads what it could not read before
     page.click("#plan")  # planning works; with no verified mission, START is refused
     expect(page.locator("[data-metric=length_m] dd")).to_be_visible(timeout=30_000)
     page.click("#cmd-start")
     page.click("#start-confirm")
-    expect(page.locator("#command-error")).to_have_text(
-        "no verified mission to start: upload a plan first")
+    # after the reload the console knows the earlier test's finished mission: the boat's refusal
+    expect(page.locator("#command-error")).to_have_text(re.compile(
+        r"no verified mission to start: upload a plan first|the boat refused START"))
     # a start inside an obstacle: the station's reason, next to the scenario editor
     obstacle = station.client.get("/api/scenario").json()["obstacles"][0]
     page.fill("#start-x", str(obstacle["x"]))

@@ -11,12 +11,15 @@ from usvstation.planning.validate import plan_violations
 from usvstation.scenario import load_scenario, parse_scenario
 
 AUTH = {"Authorization": f"Bearer {TOKEN}"}
+VIEWER = "viewer-token-0123456789"
 
 
 @pytest.fixture(scope="module")
 def station(tmp_path_factory):
-    settings = Settings(data_dir=tmp_path_factory.mktemp("data"), token=TOKEN, plan_workers=2)
-    with running_station(settings) as (url, st), httpx.Client(base_url=url, timeout=30) as client:
+    settings = Settings(data_dir=tmp_path_factory.mktemp("data"), token=TOKEN, plan_workers=2,
+                        viewer_token=VIEWER)
+    with running_station(settings) as (url, st), httpx.Client(base_url=url, timeout=30,
+                                                              headers=AUTH) as client:
         yield client, st
 
 
@@ -46,16 +49,25 @@ def test_health_and_openapi(station):
 ])
 def test_changes_need_the_token(station, method, path, body):
     client, _ = station
-    for headers in ({}, {"Authorization": "Bearer wrong"}, {"Authorization": TOKEN}):
-        r = client.request(method, path, json=body, headers=headers)
+    for auth in ("", "Bearer wrong", TOKEN):
+        r = client.request(method, path, json=body, headers={"Authorization": auth})
         assert r.status_code == 401
         assert r.headers["www-authenticate"] == "Bearer"
         assert "bearer token" in r.json()["detail"]
+    r = client.request(method, path, json=body, headers={"Authorization": f"Bearer {VIEWER}"})
+    assert r.status_code == 403 and "read only" in r.json()["detail"]
 
 
-def test_reads_need_no_token(station):
+READS = ("/api/scenario", "/api/plans", "/api/runs", "/api/telemetry", "/api/boat",
+         "/api/missions", "/api/telemetry/export")
+
+
+def test_reads_need_the_viewer_or_operator_token(station):
     client, _ = station
-    for path in ("/api/health", "/api/scenario", "/api/plans", "/api/runs", "/api/telemetry"):
+    assert client.get("/api/health", headers={"Authorization": ""}).status_code == 200
+    for path in READS:
+        assert client.get(path, headers={"Authorization": ""}).status_code == 401, path
+        assert client.get(path, headers={"Authorization": f"Bearer {VIEWER}"}).status_code == 200
         assert client.get(path).status_code == 200
 
 
@@ -113,10 +125,10 @@ def test_invalid_input_gets_422_with_field_errors(station):
 
 def test_restart_keeps_plans_on_the_same_data_dir(tmp_path):
     settings = Settings(data_dir=tmp_path, token=TOKEN, plan_workers=1)
-    with running_station(settings) as (url, _), httpx.Client(base_url=url) as client:
+    with running_station(settings) as (url, _), httpx.Client(base_url=url, headers=AUTH) as client:
         plan_id = client.post("/api/plans", json={"seed": 2}, headers=AUTH).json()["id"]
         done = wait_plan(client, plan_id)
-    with running_station(settings) as (url, _), httpx.Client(base_url=url) as client:
+    with running_station(settings) as (url, _), httpx.Client(base_url=url, headers=AUTH) as client:
         again = client.get(f"/api/plans/{plan_id}").json()
         assert again["status"] == "done" and again["plan"] == done["plan"]
         assert parse_scenario(again["scenario"]).name == "case1"

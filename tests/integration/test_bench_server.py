@@ -12,3 +12,7 @@ def test_quick_server_bench():
     hp = out["health_under_planning"]
     assert hp["plans_at_once"] == 4 and hp["plans_completed"] >= 4 and hp["count"] > 20
     assert hp["running_median"] >= 2
+    ab = out["abuse"]
+    assert ab["body_50mb_no_token"]["statuses"] == [401]
+    assert ab["half_open_connections"] == 1000 and ab["health_during_half_open"]["count"] > 20
+    assert ab["health_errors"] == 0 and ab["loop_lag_worst_ms"] >= 0

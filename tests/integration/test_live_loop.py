@@ -67,7 +67,8 @@ def test_turning_target_warns_proposes_a_replan_and_confirm_swaps_it(station) ->
     done = threading.Event()
 
     def listen() -> None:
-        with connect(station.url.replace("http", "ws") + "/ws/live") as ws:
+        with connect(station.url.replace("http", "ws") + "/ws/live",
+                     additional_headers={"Authorization": f"Bearer {station.token}"}) as ws:
             while not done.is_set():
                 try:
                     events.append(json.loads(ws.recv(timeout=0.5)))

@@ -17,7 +17,8 @@ AUTH = {"Authorization": f"Bearer {TOKEN}"}
 @pytest.fixture(scope="module")
 def station(tmp_path_factory):
     settings = Settings(data_dir=tmp_path_factory.mktemp("data"), token=TOKEN, plan_workers=1)
-    with running_station(settings) as (url, st), httpx.Client(base_url=url, timeout=30) as client:
+    with running_station(settings) as (url, st), httpx.Client(base_url=url, timeout=30,
+                                                              headers=AUTH) as client:
         yield client, st
 
 

@@ -20,6 +20,7 @@ def test_no_server_errors_on_500_plus_generated_requests(tmp_path):
              "-H", f"Authorization: Bearer {st.token}", "--checks", "not_a_server_error",
              "--phases", "coverage,fuzzing", "-n", "10", "--seed", "7", "-w", "1"],
             capture_output=True, text=True, timeout=300,
+            cwd=tmp_path,  # its .schemathesis cache goes there, not into the checkout
         )
     finally:
         st.stop()

@@ -27,8 +27,9 @@ def row(run, i):
 @pytest.fixture(scope="module")
 def station(tmp_path_factory):
     settings = Settings(data_dir=tmp_path_factory.mktemp("data"), token=TOKEN, plan_workers=1)
-    with running_station(settings) as (url, st), httpx.Client(base_url=url, timeout=30) as client:
-        job = client.post("/api/plans", json={"seed": 1}, headers=AUTH).json()
+    with running_station(settings) as (url, st), httpx.Client(base_url=url, timeout=30,
+                                                              headers=AUTH) as client:
+        job = client.post("/api/plans", json={"seed": 1}).json()
         while client.get(f"/api/plans/{job['id']}").json()["status"] not in ("done", "failed"):
             time.sleep(0.05)
         run = st.store.open_run("m1", job["id"])
@@ -97,3 +98,21 @@ def test_export_of_an_unknown_run_or_format(station):
     client, _, _, _ = station
     assert client.get("/api/telemetry/export", params={"run": 999}).status_code == 404
     assert client.get("/api/telemetry/export", params={"format": "kml"}).status_code == 422
+
+
+def test_telemetry_pages_with_a_cursor(station):
+    client, _, run, _ = station
+    everything = client.get("/api/telemetry", params={"run": run}).json()
+    assert "x-next-after" not in client.get("/api/telemetry", params={"run": run}).headers
+    pages, after = [], 0
+    while True:
+        r = client.get("/api/telemetry", params={"run": run, "limit": 100, "after": after})
+        assert r.status_code == 200
+        pages.append(r.json())
+        if "x-next-after" not in r.headers:
+            break
+        after = int(r.headers["x-next-after"])
+        assert after == pages[-1][-1]["id"]
+    assert [len(p) for p in pages] == [100, 100, 50]
+    assert [row for p in pages for row in p] == everything
+    assert client.get("/api/telemetry", params={"limit": 100_001}).status_code == 422

@@ -12,10 +12,12 @@ from __future__ import annotations
 from pathlib import Path
 
 from fastapi import FastAPI
-from fastapi.responses import FileResponse, PlainTextResponse, Response
+from fastapi.openapi.docs import get_redoc_html, get_swagger_ui_html
+from fastapi.responses import FileResponse, HTMLResponse, PlainTextResponse, Response
 from fastapi.staticfiles import StaticFiles
 
 VENDOR = {"leaflet": "leaflet/dist", "uplot": "uplot/dist"}
+DOCS_VENDOR = {"swagger-ui": "swagger-ui-dist", "redoc": "redoc/bundles"}
 REQUIRED = ("index.html", "app/main.js", "node_modules/leaflet/dist/leaflet-src.esm.js",
             "node_modules/uplot/dist/uPlot.esm.js")
 NO_CACHE = {"Cache-Control": "no-cache"}
@@ -59,3 +61,39 @@ def mount_console(app: FastAPI, frontend_dir: Path) -> None:
     for name, sub in VENDOR.items():
         app.mount(f"/vendor/{name}", StaticFiles(directory=frontend_dir / "node_modules" / sub),
                   name=f"vendor-{name}")
+
+
+def mount_docs(app: FastAPI, frontend_dir: Path) -> None:
+    """`/docs` (Swagger UI) and `/redoc` from the npm packages in frontend/node_modules, so the
+    API documentation needs no internet; 503 with the reason when they are not installed."""
+    modules = frontend_dir / "node_modules"
+    swagger, redoc = modules / "swagger-ui-dist", modules / "redoc" / "bundles"
+    title = f"{app.title} - API"
+    missing = [str(p) for p in (swagger / "swagger-ui-bundle.js", redoc / "redoc.standalone.js")
+               if not p.is_file()]
+
+    @app.get("/docs", include_in_schema=False)
+    async def swagger_ui() -> HTMLResponse:
+        if missing:
+            return PlainTextResponse(f"API docs not available: {', '.join(missing)} missing; "
+                                     "run `npm ci` in frontend/\n", status_code=503)
+        return get_swagger_ui_html(
+            openapi_url=app.openapi_url or "/openapi.json", title=title,
+            swagger_js_url="/vendor/swagger-ui/swagger-ui-bundle.js",
+            swagger_css_url="/vendor/swagger-ui/swagger-ui.css",
+            swagger_favicon_url="/vendor/swagger-ui/favicon-32x32.png")
+
+    @app.get("/redoc", include_in_schema=False)
+    async def redoc_ui() -> HTMLResponse:
+        if missing:
+            return PlainTextResponse(f"API docs not available: {', '.join(missing)} missing; "
+                                     "run `npm ci` in frontend/\n", status_code=503)
+        return get_redoc_html(openapi_url=app.openapi_url or "/openapi.json", title=title,
+                              redoc_js_url="/vendor/redoc/redoc.standalone.js",
+                              redoc_favicon_url="/vendor/swagger-ui/favicon-32x32.png",
+                              with_google_fonts=False)
+
+    if not missing:
+        for name, sub in DOCS_VENDOR.items():
+            app.mount(f"/vendor/{name}", StaticFiles(directory=modules / sub),
+                      name=f"vendor-{name}")

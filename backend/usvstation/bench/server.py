@@ -7,14 +7,19 @@ Runs a real `usv-station serve` subprocess with the simulated boat on loopback:
   stamped by the station when the frame arrived; same clock, 1 ms steps).
 - `health_under_planning`: GET /api/health every 20 ms while the station runs
   4 plans at once (4 plan workers, kept busy with random 400 m transits).
+- `abuse`: GET /api/health every 20 ms while (1) 50 MB bodies are sent without a
+  token (time to the 401/413 answer) and (2) 1000 half-open connections are held;
+  then the worst event-loop lag the station saw over the whole run.
 """
 
 from __future__ import annotations
 
 import asyncio
 import datetime as dt
+import socket
 import statistics
 import tempfile
+import threading
 import time
 from collections.abc import Callable
 from pathlib import Path
@@ -62,7 +67,8 @@ async def websocket_latency(url: str, clients: int, seconds: float) -> dict[str,
     stop = time.monotonic() + seconds
 
     async def client(i: int) -> None:
-        async with connect(url.replace("http", "ws") + "/ws/live", max_size=None) as ws:
+        async with connect(url.replace("http", "ws") + "/ws/live", max_size=None,
+                           additional_headers={"Authorization": f"Bearer {TOKEN}"}) as ws:
             while time.monotonic() < stop:
                 try:
                     text = await asyncio.wait_for(ws.recv(), timeout=1.0)
@@ -90,7 +96,7 @@ async def health_under_planning(url: str, plans_at_once: int, seconds: float) ->
     latencies: list[float] = []
     running_seen: list[int] = []
     stop = time.monotonic() + seconds
-    async with httpx.AsyncClient(base_url=url, timeout=30) as c:
+    async with httpx.AsyncClient(base_url=url, timeout=30, headers=headers) as c:
 
         async def planner(k: int) -> int:
             done = 0
@@ -118,6 +124,99 @@ async def health_under_planning(url: str, plans_at_once: int, seconds: float) ->
             **_percentiles(latencies)}
 
 
+class _Prober(threading.Thread):
+    """GET /api/health every 20 ms on a keep-alive connection, latencies in ms."""
+
+    def __init__(self, url: str) -> None:
+        super().__init__(daemon=True)
+        self.url, self.latencies, self.errors = url, [], 0
+        self.stop = threading.Event()
+
+    def run(self) -> None:
+        with httpx.Client(base_url=self.url, timeout=30) as c:
+            while not self.stop.is_set():
+                t0 = time.perf_counter()
+                try:
+                    ok = c.get("/api/health").status_code == 200
+                except httpx.HTTPError:
+                    ok = False
+                if ok:
+                    self.latencies.append(1000.0 * (time.perf_counter() - t0))
+                else:
+                    self.errors += 1
+                time.sleep(0.02)
+
+    def take(self) -> list[float]:
+        out, self.latencies = self.latencies, []
+        return out
+
+
+def _big_body_without_token(host: str, port: int, size: int) -> tuple[int, float]:
+    """PUT a `size`-byte body with no token; (status, ms until the answer's first byte)."""
+    head = (f"PUT /api/scenario HTTP/1.1\r\nHost: {host}:{port}\r\n"
+            f"Content-Type: application/json\r\nContent-Length: {size}\r\n\r\n").encode()
+    chunk = b"\0" * 65536
+    with socket.create_connection((host, port), timeout=30) as s:
+        t0 = time.perf_counter()
+        s.sendall(head)
+        s.setblocking(False)
+        sent, data = 0, b""
+        while b"\r\n" not in data and time.perf_counter() - t0 < 30:
+            if sent < size:
+                try:
+                    sent += s.send(chunk[: size - sent])
+                except BlockingIOError:
+                    time.sleep(0.001)
+                except OSError:
+                    sent = size
+            try:
+                piece = s.recv(4096)
+            except BlockingIOError:
+                continue
+            if not piece:
+                break
+            data += piece
+        elapsed = 1000.0 * (time.perf_counter() - t0)
+    status = int(data.split()[1]) if data.startswith(b"HTTP/") else 0
+    return status, round(elapsed, 2)
+
+
+def abuse(url: str, half_open: int, seconds: float) -> dict[str, Any]:
+    host, port = url.split("//")[1].split(":")
+    port_n = int(port)
+    prober = _Prober(url)
+    prober.start()
+    time.sleep(1.0)
+    prober.take()
+    bodies = [_big_body_without_token(host, port_n, 50 << 20) for _ in range(5)]
+    during_bodies = prober.take()
+    conns = []
+    for i in range(half_open):
+        sock = socket.create_connection((host, port_n), timeout=30)
+        if i % 2:
+            sock.sendall(b"GET /api/health HTTP/1.1\r\nHost: x")
+        conns.append(sock)
+    prober.take()
+    time.sleep(seconds)
+    during_half_open = prober.take()
+    for sock in conns:
+        sock.close()
+    prober.stop.set()
+    prober.join()
+    health = httpx.get(url + "/api/health", timeout=30).json()
+    return {
+        "body_50mb_no_token": {"statuses": sorted({b[0] for b in bodies}),
+                               "answer_ms": [b[1] for b in bodies],
+                               "max_ms": max(b[1] for b in bodies)},
+        "health_during_bodies": _percentiles(during_bodies) if during_bodies else {"count": 0},
+        "half_open_connections": half_open,
+        "health_during_half_open": (_percentiles(during_half_open) if during_half_open
+                                    else {"count": 0}),
+        "health_errors": prober.errors,
+        "loop_lag_worst_ms": health["loop_lag_ms"]["worst_since_start"],
+    }
+
+
 def run_server_bench(quick: bool = False,
                      progress: Callable[[str], None] = lambda _m: None) -> dict[str, Any]:
     seconds = 5.0 if quick else 30.0
@@ -135,6 +234,14 @@ def run_server_bench(quick: bool = False,
     try:
         out["health_under_planning"] = asyncio.run(health_under_planning(station.url, 4,
                                                                          seconds))
+        out["loop_lag_worst_ms_planning"] = httpx.get(
+            station.url + "/api/health", timeout=30).json()["loop_lag_ms"]["worst_since_start"]
+    finally:
+        station.close()
+    progress("station under abuse: 50 MB bodies without a token, 1000 half-open connections")
+    station = Station({})
+    try:
+        out["abuse"] = abuse(station.url, 1000, seconds)
     finally:
         station.close()
     return out

@@ -1,13 +1,34 @@
-"""Plan jobs: the IGA runs in a process pool so the event loop never blocks."""
+"""Plan jobs: the IGA runs in worker processes so the event loop never blocks.
+
+Each of the `workers` slots owns one worker process and a pipe to it. A job
+that overruns `timeout_s`, is cancelled (`DELETE /api/plans/{id}`) or whose
+worker dies (killed, out of memory) ends `failed` or `cancelled` with the
+reason, and the slot starts a fresh worker, so one bad job never breaks
+planning. Workers run under SCHED_IDLE with an address-space limit of
+`memory_mb`, and die with the station (PR_SET_PDEATHSIG, even on kill -9).
+At most `queue_max` jobs wait or run at once; beyond that `submit` refuses.
+Every job ends in a final state (done, failed, cancelled), even when the
+database refuses to store it.
+"""
 
 from __future__ import annotations
 
 import asyncio
 import contextlib
+import ctypes
+import ctypes.util
+import logging
 import multiprocessing
 import os
+import resource
+import signal
+import sys
+import threading
+import time
 import uuid
-from concurrent.futures import ProcessPoolExecutor
+from dataclasses import dataclass
+from multiprocessing.connection import Connection
+from multiprocessing.process import BaseProcess
 from typing import Any
 
 from usvstation.planning.errors import NoFeasiblePlan
@@ -16,6 +37,26 @@ from usvstation.scenario import Scenario, scenario_at
 from usvstation.services.hub import LiveHub
 from usvstation.store.db import Store, utc_now
 
+log = logging.getLogger("usvstation.plans")
+
+WORKER_NICENESS = 19
+WORKER_START_TIMEOUT_S = 120.0
+FINAL = ("done", "failed", "cancelled")
+PR_SET_PDEATHSIG = 1
+WATCHDOG_S = 1.0
+
+
+class PlanQueueFull(Exception):
+    """More than `queue_max` jobs waiting or running."""
+
+
+class PlanNotCancellable(Exception):
+    """The job already ended."""
+
+
+class WorkerDied(Exception):
+    pass
+
 
 def plan_in_worker(scenario: dict[str, Any], planner: str, seed: int | None) -> dict[str, Any]:
     """Runs in a worker process: validate and plan; NoFeasiblePlan propagates."""
@@ -23,6 +64,33 @@ def plan_in_worker(scenario: dict[str, Any], planner: str, seed: int | None) -> 
     from usvstation.scenario import parse_scenario
 
     return plan_scenario(parse_scenario(scenario), planner=planner, seed=seed)
+
+
+def die_with_parent(station_pid: int) -> None:
+    """End this worker when the station dies, even by SIGKILL.
+
+    The worker's parent is the forkserver, which exits when the station does:
+    PR_SET_PDEATHSIG has Linux SIGKILL us then. A watchdog thread also polls the
+    station's pid each WATCHDOG_S in case the forkserver outlives it.
+    """
+    if sys.platform.startswith("linux"):
+        with contextlib.suppress(OSError, AttributeError):
+            libc = ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6", use_errno=True)
+            libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+    if os.getppid() == 1:  # the parent already died before prctl
+        os._exit(0)
+
+    def watch() -> None:
+        while True:
+            time.sleep(WATCHDOG_S)
+            try:
+                os.kill(station_pid, 0)
+            except ProcessLookupError:
+                os._exit(0)
+            except PermissionError:
+                pass
+
+    threading.Thread(target=watch, name="station-watchdog", daemon=True).start()
 
 
 def scenario_from_boat(scenario: Scenario, row: dict[str, Any] | None,
@@ -42,9 +110,6 @@ def scenario_from_boat(scenario: Scenario, row: dict[str, Any] | None,
                        max(float(t), 0.0))
 
 
-WORKER_NICENESS = 19
-
-
 def outdated_by(planned: dict[str, Any], working: Scenario) -> list[str]:
     """The top-level fields in which the working scenario differs from the one a plan was
     made for, when the plan was made for the working scenario (same name); else []."""
@@ -54,14 +119,21 @@ def outdated_by(planned: dict[str, Any], working: Scenario) -> list[str]:
     return sorted(k for k in planned.keys() | now.keys() if planned.get(k) != now.get(k))
 
 
-def init_worker() -> None:
-    """Plan workers: tuned allocator, and the CPU only when the server does not want it.
+def init_worker(memory_mb: int | None = None) -> None:
+    """Plan workers: tuned allocator, a memory limit, and the CPU only when the server idles.
 
     Planning is background work; the event loop (telemetry, websocket, API)
     must get the CPU first on a 2-core machine running several plans, so the
     workers run under SCHED_IDLE (Linux), else at the lowest nice level.
     """
     tune_allocator()
+    if memory_mb is not None:
+        limit = memory_mb << 20
+        _, hard = resource.getrlimit(resource.RLIMIT_AS)
+        if hard != resource.RLIM_INFINITY:
+            limit = min(limit, hard)
+        with contextlib.suppress(ValueError, OSError):
+            resource.setrlimit(resource.RLIMIT_AS, (limit, hard))
     try:
         os.sched_setscheduler(0, os.SCHED_IDLE, os.sched_param(0))
     except (AttributeError, OSError):
@@ -69,41 +141,87 @@ def init_worker() -> None:
             os.nice(WORKER_NICENESS)
 
 
-def _warm_up() -> bool:
-    import usvstation.planning.plan  # noqa: F401  (import numpy/scipy once per worker)
+def worker_main(conn: Connection, parent_pid: int, memory_mb: int) -> None:
+    """A plan worker: ("ready",), then one reply per (scenario, planner, seed) request."""
+    die_with_parent(parent_pid)
+    init_worker(memory_mb)
+    import usvstation.planning.plan  # noqa: F401  (numpy/scipy once, before the first job)
 
-    return True
+    conn.send(("ready", os.getpid()))
+    while True:
+        try:
+            request = conn.recv()
+        except (EOFError, OSError):
+            return
+        if request is None:
+            return
+        try:
+            reply: tuple = ("done", plan_in_worker(*request))
+        except NoFeasiblePlan as exc:
+            reply = ("failed", str(exc))
+        except MemoryError:
+            reply = ("failed", f"the plan needed more than the worker's {memory_mb} MB "
+                               "(--plan-memory-mb)")
+        except Exception as exc:  # a bug in the planner must not take the worker down
+            reply = ("failed", f"planner error: {type(exc).__name__}: {exc}")
+        conn.send(reply)
+
+
+@dataclass(eq=False)
+class _Worker:
+    proc: BaseProcess
+    conn: Connection
+    waiting: asyncio.Future | None = None  # the reply being awaited
 
 
 class PlanService:
     """Queues plan jobs, runs at most `workers` at once, stores every job and its result."""
 
-    def __init__(self, store: Store, hub: LiveHub, workers: int = 2) -> None:
+    def __init__(self, store: Store, hub: LiveHub, workers: int = 2, *, timeout_s: float = 10.0,
+                 memory_mb: int = 2048, queue_max: int = 32) -> None:
         self.store, self.hub, self.workers = store, hub, workers
+        self.timeout_s, self.memory_mb, self.queue_max = timeout_s, memory_mb, queue_max
         self.jobs: dict[str, dict[str, Any]] = {}
-        self._slots = asyncio.Semaphore(workers)
-        self._tasks: set[asyncio.Task] = set()
-        self._pool: ProcessPoolExecutor | None = None
+        self.started = False
+        self.restarts = 0  # workers replaced after a death, timeout or cancel
+        self._queue: asyncio.Queue[str] = asyncio.Queue()
+        self._slots: list[_Worker | None] = [None] * workers
+        self._running: dict[str, int] = {}  # job id -> slot
+        self._runners: list[asyncio.Task] = []
+        self._reapers: set[asyncio.Task] = set()
+        self._ctx = multiprocessing.get_context("forkserver")
 
     async def start(self) -> None:
-        ctx = multiprocessing.get_context("forkserver")
-        self._pool = ProcessPoolExecutor(self.workers, mp_context=ctx, initializer=init_worker)
-        loop = asyncio.get_running_loop()
         for job in await asyncio.to_thread(self.store.plans):
-            if job["status"] in ("queued", "running"):  # interrupted by a restart
+            if job["status"] not in FINAL:  # interrupted by a restart
                 job.update(status="failed", error="the station restarted before this plan finished")
-                await asyncio.to_thread(self.store.save_plan, job)
+                await self._save(job, publish=False)
             self.jobs[job["id"]] = job
-        await asyncio.gather(*(loop.run_in_executor(self._pool, _warm_up)
-                               for _ in range(self.workers)))
+        await asyncio.gather(*(self._ensure_worker(i) for i in range(self.workers)))
+        self._runners = [asyncio.create_task(self._slot(i), name=f"plan-slot-{i}")
+                         for i in range(self.workers)]
+        self.started = True
 
     async def stop(self) -> None:
-        for task in self._tasks:
+        for task in self._runners:
             task.cancel()
-        if self._pool:
-            self._pool.shutdown(wait=False, cancel_futures=True)
+        for task in self._runners:
+            with contextlib.suppress(asyncio.CancelledError, Exception):
+                await task
+        for job in self.jobs.values():
+            if job["status"] not in FINAL:
+                job.update(status="failed", error="the station stopped before this plan finished")
+                await self._save(job, publish=False)
+        for i in range(self.workers):
+            self._kill(i)
 
+    # --- requests ------------------------------------------------------------------------
     async def submit(self, scenario: Scenario, planner: str, seed: int | None) -> dict[str, Any]:
+        """Queue a job; PlanQueueFull when `queue_max` jobs already wait or run."""
+        active = sum(1 for j in self.jobs.values() if j["status"] not in FINAL)
+        if active >= self.queue_max:
+            raise PlanQueueFull(f"{active} plans already queued or running (--plan-queue "
+                                f"{self.queue_max}); try again later")
         job = {
             "id": uuid.uuid4().hex[:12], "created_at": utc_now(), "status": "queued",
             "planner": planner, "seed": seed, "scenario": scenario.model_dump(mode="json"),
@@ -111,9 +229,21 @@ class PlanService:
         }
         self.jobs[job["id"]] = job
         await self._save(job)
-        task = asyncio.create_task(self._run(job))
-        self._tasks.add(task)
-        task.add_done_callback(self._tasks.discard)
+        self._queue.put_nowait(job["id"])
+        return job
+
+    async def cancel(self, job_id: str) -> dict[str, Any] | None:
+        """Cancel a queued or running job (its worker is replaced); None if there is no such job."""
+        job = self.jobs.get(job_id)
+        if job is None:
+            return None
+        if job["status"] in FINAL:
+            raise PlanNotCancellable(f"plan {job_id} already ended: {job['status']}")
+        job.update(status="cancelled", error="cancelled by the operator")
+        slot = self._running.get(job_id)
+        if slot is not None:
+            self._kill(slot)
+        await self._save(job)
         return job
 
     def get(self, job_id: str) -> dict[str, Any] | None:
@@ -125,27 +255,142 @@ class PlanService:
             "fitness": job["plan"]["metrics"]["fitness"] if job.get("plan") else None,
         }
 
-    async def _run(self, job: dict[str, Any]) -> None:
-        async with self._slots:
-            job["status"] = "running"
-            await self._save(job)
-            loop = asyncio.get_running_loop()
-            try:
-                plan = await loop.run_in_executor(
-                    self._pool, plan_in_worker, job["scenario"], job["planner"], job["seed"]
-                )
-            except NoFeasiblePlan as exc:
-                job.update(status="failed", error=str(exc))
-            except asyncio.CancelledError:
-                job.update(status="failed", error="the station stopped before this plan finished")
-                await self._save(job)
-                raise
-            except Exception as exc:  # a bug in the planner must not take the station down
-                job.update(status="failed", error=f"planner error: {type(exc).__name__}: {exc}")
-            else:
-                job.update(status="done", plan=plan, seed=plan["seed"])
-            await self._save(job)
+    def health(self) -> dict[str, Any]:
+        counts = {s: 0 for s in ("queued", "running")}
+        for j in self.jobs.values():
+            if j["status"] in counts:
+                counts[j["status"]] += 1
+        alive = [w for w in self._slots if w is not None and w.proc.is_alive()]
+        return {**counts, "workers": self.workers, "workers_alive": len(alive),
+                "worker_pids": [w.proc.pid for w in alive], "workers_replaced": self.restarts,
+                "queue_max": self.queue_max, "timeout_s": self.timeout_s}
 
-    async def _save(self, job: dict[str, Any]) -> None:
-        await asyncio.to_thread(self.store.save_plan, job)
-        self.hub.publish("plan", self.summary(job))
+    # --- workers -------------------------------------------------------------------------
+    async def _ensure_worker(self, i: int) -> _Worker:
+        w = self._slots[i]
+        if w is not None and w.proc.is_alive():
+            return w
+        if w is not None:
+            self._kill(i)
+        parent_end, child_end = self._ctx.Pipe()
+        proc = self._ctx.Process(target=worker_main, name=f"usv-plan-worker-{i}", daemon=True,
+                                 args=(child_end, os.getpid(), self.memory_mb))
+        await asyncio.to_thread(proc.start)
+        child_end.close()
+        w = _Worker(proc, parent_end)
+        self._slots[i] = w
+        await asyncio.wait_for(self._recv(w), WORKER_START_TIMEOUT_S)
+        return w
+
+    def _kill(self, i: int) -> None:
+        w = self._slots[i]
+        if w is None:
+            return
+        self._slots[i] = None
+        loop = asyncio.get_running_loop()
+        with contextlib.suppress(OSError, ValueError):
+            loop.remove_reader(w.conn.fileno())
+        if w.waiting is not None and not w.waiting.done():
+            w.waiting.set_exception(WorkerDied("stopped by the station"))
+        with contextlib.suppress(OSError, ValueError, AttributeError):
+            w.proc.kill()
+        w.conn.close()
+        reaper = loop.create_task(asyncio.to_thread(w.proc.join, 5.0))
+        self._reapers.add(reaper)
+        reaper.add_done_callback(self._reapers.discard)
+
+    async def _recv(self, w: _Worker) -> tuple:
+        """The worker's next message, without blocking the loop; WorkerDied on EOF."""
+        loop = asyncio.get_running_loop()
+        fut: asyncio.Future[tuple] = loop.create_future()
+        fd = w.conn.fileno()
+        w.waiting = fut
+
+        def readable() -> None:
+            loop.remove_reader(fd)
+            if fut.done():
+                return
+            try:
+                fut.set_result(w.conn.recv())
+            except (EOFError, OSError) as exc:
+                fut.set_exception(WorkerDied(str(exc) or "the pipe closed"))
+
+        loop.add_reader(fd, readable)
+        try:
+            return await fut
+        finally:
+            with contextlib.suppress(OSError, ValueError):
+                loop.remove_reader(fd)
+
+    # --- jobs ----------------------------------------------------------------------------
+    async def _slot(self, i: int) -> None:
+        while True:
+            job_id = await self._queue.get()
+            job = self.jobs.get(job_id)
+            if job is None or job["status"] != "queued":
+                continue  # cancelled while waiting
+            try:
+                await self._run(i, job)
+            except asyncio.CancelledError:
+                raise
+            except Exception as exc:  # nothing leaves a job queued or running
+                log.exception("plan job %s", job_id)
+                if job["status"] not in FINAL:
+                    job.update(status="failed", error=f"station error: {type(exc).__name__}: "
+                                                      f"{exc}")
+                    await self._save(job)
+
+    async def _run(self, i: int, job: dict[str, Any]) -> None:
+        try:
+            w = await self._ensure_worker(i)
+        except (OSError, WorkerDied, TimeoutError) as exc:
+            job.update(status="failed", error=f"no plan worker could start: {exc}")
+            await self._save(job)
+            return
+        job["status"] = "running"
+        await self._save(job)
+        self._running[job["id"]] = i
+        try:
+            w.conn.send((job["scenario"], job["planner"], job["seed"]))
+            kind, payload = await asyncio.wait_for(self._recv(w), self.timeout_s)
+        except TimeoutError:
+            self._kill(i)
+            self.restarts += 1
+            if job["status"] not in FINAL:
+                job.update(status="failed", error=f"the plan took longer than the "
+                                                  f"{self.timeout_s:g} s limit (--plan-timeout-s)")
+        except (WorkerDied, OSError) as exc:
+            await asyncio.to_thread(w.proc.join, 2.0)  # reap it for its exit code
+            code = w.proc.exitcode
+            self._kill(i)
+            self.restarts += 1
+            if job["status"] not in FINAL:
+                how = (f"killed by signal {-code}" if code is not None and code < 0 else
+                       f"exit code {code}" if code is not None else str(exc))
+                job.update(status="failed", error=f"the plan worker died ({how})")
+        except asyncio.CancelledError:
+            self._kill(i)
+            raise
+        else:
+            if job["status"] not in FINAL:
+                if kind == "done":
+                    job.update(status="done", plan=payload, seed=payload["seed"])
+                else:
+                    job.update(status="failed", error=payload)
+        finally:
+            self._running.pop(job["id"], None)
+        if job["status"] != "cancelled":
+            await self._save(job)
+        if self._slots[i] is None:
+            with contextlib.suppress(OSError, WorkerDied, TimeoutError):
+                await self._ensure_worker(i)
+
+    async def _save(self, job: dict[str, Any], publish: bool = True) -> None:
+        """Store the job; a store error is logged, the job's state stays true in memory."""
+        try:
+            await asyncio.to_thread(self.store.save_plan, job)
+        except Exception as exc:  # the job must still reach a final state
+            log.error("cannot store plan %s (%s): %s", job["id"], job["status"], exc)
+        if publish:
+            self.hub.publish("plan", self.summary(job))
+

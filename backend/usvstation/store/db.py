@@ -9,11 +9,13 @@ on the database.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import queue
 import sqlite3
 import threading
 import time
+from collections import deque
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
@@ -88,8 +90,8 @@ def utc_now() -> str:
     return time.strftime("%Y-%m-%dT%H:%M:%S", time.gmtime(t)) + f".{int(t * 1000) % 1000:03d}Z"
 
 
-def connect(path: Path) -> sqlite3.Connection:
-    conn = sqlite3.connect(path, check_same_thread=False, timeout=30.0)
+def connect(path: Path, timeout: float = 30.0) -> sqlite3.Connection:
+    conn = sqlite3.connect(path, check_same_thread=False, timeout=timeout)
     conn.row_factory = sqlite3.Row
     conn.execute("PRAGMA journal_mode=WAL")
     conn.execute("PRAGMA synchronous=NORMAL")
@@ -102,18 +104,40 @@ class WriterStats:
     received: int = 0
     committed: int = 0
     commits: int = 0
+    dropped: int = 0  # frames thrown away because the queue overflowed while failing
+    retries: int = 0  # failed commits (each retried after a backoff)
+
+
+QUEUE_MAX = 60_000  # 20 minutes at 50 Hz kept while the database refuses writes
+BACKOFF_S = (0.25, 0.5, 1.0, 2.0, 4.0)  # waits between failed commits, the last repeated
+WRITER_BUSY_TIMEOUT_S = 2.0
 
 
 class TelemetryWriter:
-    """Background thread that batches telemetry rows into transactions."""
+    """Background thread that batches telemetry rows into transactions.
 
-    def __init__(self, path: Path, commit_interval_s: float = 0.2, batch_max: int = 2000) -> None:
+    Any SQLite or OS error (disk full, a lock held by another process, a
+    read-only file) is kept as `error` (health reports it) and the commit is
+    retried after a growing backoff, on a fresh connection, until it
+    succeeds; meanwhile rows wait in a queue of at most `queue_max` frames
+    (the oldest dropped and counted beyond that). `error` clears on the first
+    successful commit.
+    """
+
+    def __init__(self, path: Path, commit_interval_s: float = 0.2, batch_max: int = 2000,
+                 queue_max: int = QUEUE_MAX) -> None:
         self.path, self.interval, self.batch_max = path, commit_interval_s, batch_max
+        self.queue_max = queue_max
         self._queue: queue.SimpleQueue[tuple | threading.Event | None] = queue.SimpleQueue()
         self._thread = threading.Thread(target=self._run, name="telemetry-writer", daemon=True)
-        self._flushed = threading.Event()
+        self._pending: deque[tuple] = deque()
         self.stats = WriterStats()
-        self.error: BaseException | None = None
+        self.error: str | None = None
+
+    @property
+    def queued(self) -> int:
+        """Rows received but not committed yet."""
+        return self.stats.received - self.stats.committed - self.stats.dropped
 
     def start(self) -> None:
         self._thread.start()
@@ -132,42 +156,84 @@ class TelemetryWriter:
         return done.wait(timeout)
 
     def close(self, timeout: float = 5.0) -> None:
-        """Commit what is queued and stop the thread."""
+        """Commit what is queued (trying until `timeout`) and stop the thread."""
         if self._thread.is_alive():
+            self._stop_by = time.monotonic() + timeout
             self._queue.put(None)
-            self._thread.join(timeout)
+            self._thread.join(timeout + 1.0)
+
+    _stop_by: float | None = None
+
+    def _take(self, item: tuple) -> None:
+        self._pending.append(item)
+        if len(self._pending) > self.queue_max:
+            self._pending.popleft()
+            self.stats.dropped += 1
 
     def _run(self) -> None:
-        conn = connect(self.path)
-        pending: list[tuple] = []
-        deadline = None
-        try:
-            while True:
-                wait = None if deadline is None else max(0.0, deadline - time.monotonic())
+        conn: sqlite3.Connection | None = None
+        waiters: list[threading.Event] = []
+        stopping, failures = False, 0
+        commit_at: float | None = None  # monotonic time of the next commit (or retry)
+        while True:
+            now = time.monotonic()
+            wait = None if commit_at is None else max(0.0, commit_at - now)
+            if stopping and self._stop_by is not None:
+                wait = max(0.0, min(wait if wait is not None else 0.0, self._stop_by - now))
+            try:
+                item = self._queue.get(timeout=wait) if wait != 0.0 else self._queue.get_nowait()
+            except queue.Empty:
+                item = ()
+            while item != ():  # take everything already queued
+                if item is None:
+                    stopping = True
+                elif isinstance(item, threading.Event):
+                    waiters.append(item)
+                else:
+                    self._take(item)
                 try:
-                    item = self._queue.get(timeout=wait)
+                    item = self._queue.get_nowait()
                 except queue.Empty:
                     item = ()
-                if item is None:
-                    self._commit(conn, pending)
-                    return
-                if isinstance(item, threading.Event):
-                    self._commit(conn, pending)
-                    pending, deadline = [], None
-                    item.set()
+            now = time.monotonic()
+            if not failures:
+                if stopping or waiters or len(self._pending) >= self.batch_max:
+                    commit_at = now
+                elif self._pending and commit_at is None:
+                    commit_at = now + self.interval
+            if commit_at is None or now < commit_at:
+                if stopping and not failures:
+                    commit_at = now
+                else:
                     continue
-                if item:
-                    pending.append(item)
-                    if deadline is None:
-                        deadline = time.monotonic() + self.interval
-                if pending and (time.monotonic() >= deadline or len(pending) >= self.batch_max):
-                    self._commit(conn, pending)
-                    pending, deadline = [], None
-        except BaseException as exc:  # keep the reason for /api/health
-            self.error = exc
-            raise
-        finally:
-            conn.close()
+            try:
+                if conn is None:
+                    conn = connect(self.path, timeout=WRITER_BUSY_TIMEOUT_S)
+                while self._pending:
+                    batch = [self._pending[i]
+                             for i in range(min(self.batch_max, len(self._pending)))]
+                    self._commit(conn, batch)
+                    for _ in batch:
+                        self._pending.popleft()
+            except (sqlite3.Error, OSError) as exc:
+                self.error = f"{type(exc).__name__}: {exc}"
+                self.stats.retries += 1
+                failures += 1
+                commit_at = time.monotonic() + BACKOFF_S[min(failures, len(BACKOFF_S)) - 1]
+                if conn is not None:
+                    with contextlib.suppress(sqlite3.Error):
+                        conn.close()
+                    conn = None
+                if stopping and (self._stop_by is None or time.monotonic() >= self._stop_by):
+                    return
+                continue
+            failures, commit_at, self.error = 0, None, None
+            for w in waiters:
+                w.set()
+            waiters = []
+            if stopping:
+                conn.close()
+                return
 
     def _commit(self, conn: sqlite3.Connection, rows: list[tuple]) -> None:
         if not rows:
@@ -236,8 +302,9 @@ class Store:
 
     # --- telemetry ---------------------------------------------------------
     def telemetry(self, run: int | None, since: str | None, until: str | None,
-                  limit: int) -> list[dict[str, Any]]:
-        sql, args = self._telemetry_query(run, since, until)
+                  limit: int, after: int = 0) -> list[dict[str, Any]]:
+        """At most `limit` rows with an id above `after` (the paging cursor), in id order."""
+        sql, args = self._telemetry_query(run, since, until, after)
         rows = self.conn.execute(sql + " LIMIT ?", (*args, limit)).fetchall()
         return [dict(r) for r in rows]
 
@@ -254,9 +321,12 @@ class Store:
             conn.close()
 
     @staticmethod
-    def _telemetry_query(run: int | None, since: str | None,
-                         until: str | None) -> tuple[str, tuple]:
+    def _telemetry_query(run: int | None, since: str | None, until: str | None,
+                         after: int = 0) -> tuple[str, tuple]:
         where, args = [], []
+        if after:
+            where.append("id > ?")
+            args.append(after)
         if run is not None:
             where.append("run = ?")
             args.append(run)
