@@ -35,6 +35,7 @@ def test_after_hold_the_boat_stays_within_3_m_for_60_s_in_half_a_metre_per_secon
     finally:
         st.stop()
     st = StationProcess(data, "--sim-speed", SIM_SPEED)  # the simulated sea takes the current
+    st.wait_link_up()
     try:
         c = st.client
         assert c.get("/api/scenario").json()["environment"]["current_speed"] == 0.5
@@ -43,7 +44,8 @@ def test_after_hold_the_boat_stays_within_3_m_for_60_s_in_half_a_metre_per_secon
         r = c.post("/api/missions", json={"plan_id": plan["id"]})
         mission = st.wait(f"/api/missions/{r.json()['id']}", "state", ("uploading",), 30)
         assert mission["state"] == "verified"
-        assert c.post("/api/boat/command", json={"command": "start"}).json()["state"] == "RUNNING"
+        start = c.post("/api/boat/command", json={"command": "start", "mission_id": mission["id"]})
+        assert start.json()["state"] == "RUNNING"
         mission = st.wait(f"/api/missions/{mission['id']}", "run", (None,), 30)
         run = mission["run"]
         t0 = _wait_boat_time(c, run, 0.0, 30)[0]["boat_time"]
