@@ -73,7 +73,7 @@ class RRTStarOptions(SeedOptions):
 
 def _drive(scenario: Scenario, seed: int, opts: SeedOptions, name: str,
            core: Callable[[Scenario, World, np.ndarray, float, np.random.Generator], tuple],
-           ) -> dict[str, Any]:
+           speeds_from: dict[str, Any] | None = None) -> dict[str, Any]:
     """Common attempt loop: gate (recovery), seed, clearance; first plan passing the checker."""
     t0 = time.perf_counter()
     cruise = cruise_speed(scenario, opts.cruise_speed)
@@ -93,12 +93,18 @@ def _drive(scenario: Scenario, seed: int, opts: SeedOptions, name: str,
         if route is None:
             last = extra.get("reason", last) if isinstance(extra, dict) else last
             continue
+        speeds = None
+        if speeds_from is not None and "speeds" in speeds_from:
+            speeds = np.asarray(speeds_from["speeds"], float)
         if gate is not None:
             route = np.vstack([route, [[0.0, 0.0]]])
+            if speeds is not None:
+                speeds = np.append(speeds, speeds[-1])
         try:
             plan = finish_plan(scenario, route, name, seed, cruise, time.perf_counter() - t0,
                                {**(extra or {}), "attempts": attempt + 1,
-                                "inflation_m": round(margin, 6)}, cut=opts.corner_cut_m)
+                                "inflation_m": round(margin, 6)}, cut=opts.corner_cut_m,
+                               speeds=speeds)
         except NoFeasiblePlan as exc:
             last = str(exc).removeprefix("no feasible plan: ")
             continue
@@ -216,3 +222,46 @@ def plan(scenario: Scenario, name: str = "iga", seed: int | None = None,
         loc = ".".join(str(p) for p in err["loc"])
         raise PlannerOptionError(f"planner.{loc}: {err['msg']}") from None
     return info.run(scenario, seed, opts)
+
+
+class ColregsGAOptions(SeedOptions):
+    population: int = Field(50, ge=4, le=2000)
+    generations: int = Field(40, ge=1, le=1000)
+    stall_generations: int = Field(6, ge=1, le=1000)
+    yaw_rate_max_deg: float = Field(15.0, gt=0.0, le=90.0, description="paper: 5 deg/s")
+    d_ca_m: float = Field(10.0, gt=0.0, description="range where obstacle terms saturate")
+    risk_scale_m: float = Field(20.0, gt=0.0, description="L_d of l1 = 1.5 rho L_d")
+    improved: bool = True
+    mode: str = Field("station", pattern="^(station|paper)$")
+
+
+def _run_colregs_ga(sc: Scenario, seed: int, o: ColregsGAOptions) -> dict[str, Any]:
+    import math
+
+    from usvstation.planning.seeds.colregs_ga import GAStepOptions, plan_colregs_ga
+
+    paper = o.mode == "paper"
+    go = GAStepOptions(
+        population=o.population, generations=300 if paper else o.generations,
+        stall=20 if paper else o.stall_generations,
+        yaw_rate_max_deg=5.0 if paper else o.yaw_rate_max_deg,
+        d_ca=o.d_ca_m, risk_scale_m=o.risk_scale_m, improved=o.improved, paper_fitness=paper)
+    holder: dict[str, Any] = {}
+
+    def core(s: Scenario, world: World, target: np.ndarray, cruise: float,
+             rng: np.random.Generator) -> tuple:
+        v = s.vessel
+        route, speeds, stats = plan_colregs_ga(
+            np.array([s.start.x, s.start.y]), math.radians(s.start.heading_deg),
+            min(max(s.start.speed, v.speed_min), v.speed_max), target, world,
+            v.speed_min, min(v.speed_max, cruise * 1.5), v.accel_max, rng, go)
+        holder["speeds"] = speeds
+        stats["mode"] = o.mode
+        return route, stats
+
+    return _drive(sc, seed, o, "colregs-ga", core, speeds_from=holder)
+
+
+_register(PlannerInfo(
+    "colregs-ga", "001", "Per-step GA over acceleration and yaw rate with COLREGs and fuzzy risk",
+    (MOVING, COLREGS, RUN_IN, SPEED, SEEDED), ColregsGAOptions, _run_colregs_ga))

@@ -111,12 +111,14 @@ def cruise_speed(scenario: Scenario, requested: float | None = None) -> float:
     return float(min(max(want, v.speed_min), v.speed_max))
 
 
-def speed_profile(pts: np.ndarray, scenario: Scenario, cruise: float) -> tuple[np.ndarray, ...]:
+def speed_profile(pts: np.ndarray, scenario: Scenario, cruise: float,
+                  wanted: np.ndarray | None = None) -> tuple[np.ndarray, ...]:
     """Times and speeds of a polyline: from the start speed towards `cruise` at accel_max.
 
     v_{i+1} = min(cruise, sqrt(v_i^2 + 2 a s_i)) (or the mirror when slowing
     down), so |v_{i+1} - v_i| / dt_i = |v_{i+1}^2 - v_i^2| / (2 s_i) <= a with
     dt_i = 2 s_i / (v_i + v_{i+1}), position linear in time on each segment.
+    `wanted` (one speed per point) replaces the constant cruise target.
     """
     v = scenario.vessel
     seg = np.hypot(*np.diff(pts, axis=0).T)
@@ -125,10 +127,11 @@ def speed_profile(pts: np.ndarray, scenario: Scenario, cruise: float) -> tuple[n
     a = v.accel_max * (1.0 - 1e-9)
     for i, s in enumerate(seg):
         vi = speeds[i]
-        if vi < cruise:
-            speeds[i + 1] = min(cruise, math.sqrt(vi * vi + 2.0 * a * s))
+        goal = cruise if wanted is None else float(np.clip(wanted[i + 1], v.speed_min, v.speed_max))
+        if vi < goal:
+            speeds[i + 1] = min(goal, math.sqrt(vi * vi + 2.0 * a * s))
         else:
-            speeds[i + 1] = max(cruise, math.sqrt(max(vi * vi - 2.0 * a * s, 0.0)))
+            speeds[i + 1] = max(goal, math.sqrt(max(vi * vi - 2.0 * a * s, 0.0)))
     dt = 2.0 * seg / (speeds[:-1] + speeds[1:])
     return np.concatenate([[0.0], np.cumsum(dt)]), speeds
 
@@ -226,6 +229,7 @@ def path_metrics(pts: np.ndarray) -> dict[str, float]:
 def finish_plan(
     scenario: Scenario, route: np.ndarray, planner: str, seed: int, cruise: float,
     elapsed_s: float, extra: dict[str, Any] | None = None, cut: float = 6.0,
+    speeds: np.ndarray | None = None,
 ) -> dict[str, Any]:
     """Stable plan dict from a route start -> ... -> goal, checked by the validator.
 
@@ -237,12 +241,23 @@ def finish_plan(
     route[0] = (scenario.start.x, scenario.start.y)
     route[-1] = (scenario.goal.x, scenario.goal.y)
     world = World.from_scenario(scenario, margin=scenario.vessel.length / 2.0)
+    if speeds is not None:  # a planner with its own speeds: speed of the nearest route point
+        pts = limit_turns(route, scenario.vessel.turn_max_deg, min(cut, 1.0))
+        keep = [int(np.argmin(np.hypot(*(route - q).T))) for q in pts]
+        wanted = np.asarray(speeds, float)[keep]
+        t, v = speed_profile(pts, scenario, cruise, wanted)
+        return _assemble(scenario, pts, t, v, planner, seed, elapsed_s, extra)
     pts = limit_turns(route, scenario.vessel.turn_max_deg, cut)
     for c in (cut / 2, cut / 4, cut / 8):
         if not timed_hits(pts, world, scenario, cruise).any():
             break
         pts = limit_turns(route, scenario.vessel.turn_max_deg, c)
     t, v = speed_profile(pts, scenario, cruise)
+    return _assemble(scenario, pts, t, v, planner, seed, elapsed_s, extra)
+
+
+def _assemble(scenario: Scenario, pts: np.ndarray, t: np.ndarray, v: np.ndarray, planner: str,
+              seed: int, elapsed_s: float, extra: dict[str, Any] | None) -> dict[str, Any]:
     h = np.degrees(np.arctan2(*np.diff(pts, axis=0).T[::-1]))
     h = np.append(h, h[-1]) % 360.0
     waypoints = [
