@@ -265,3 +265,58 @@ def _run_colregs_ga(sc: Scenario, seed: int, o: ColregsGAOptions) -> dict[str, A
 _register(PlannerInfo(
     "colregs-ga", "001", "Per-step GA over acceleration and yaw rate with COLREGs and fuzzy risk",
     (MOVING, COLREGS, RUN_IN, SPEED, SEEDED), ColregsGAOptions, _run_colregs_ga))
+
+
+class ReplanGAOptions(SeedOptions):
+    population: int = Field(20, ge=4, le=2000)
+    generations_global: int = Field(30, ge=1, le=2000)
+    generations_local: int = Field(20, ge=1, le=2000)
+    unsafe_range_m: float = Field(100.0, gt=0.0)
+
+
+def _run_replan_ga(sc: Scenario, seed: int, o: ReplanGAOptions) -> dict[str, Any]:
+    from usvstation.planning.seeds.replan_ga import ReplanOptions, plan_replan
+
+    ro = ReplanOptions(population=o.population, generations_global=o.generations_global,
+                       generations_local=o.generations_local, unsafe_range_m=o.unsafe_range_m)
+
+    def core(s: Scenario, world: World, target: np.ndarray, cruise: float,
+             rng: np.random.Generator) -> tuple:
+        start = np.array([s.start.x, s.start.y])
+        return plan_replan(start, target, world, cruise, _bounds(s, target, pad=None), rng, ro)
+
+    return _drive(sc, seed, o, "replan-ga", core)
+
+
+class DEAPFOptionsModel(SeedOptions):
+    step_m: float | None = Field(None, gt=0.0, description="APF step s; default dist/40 in [0.5, 5]")
+    turn_radius_m: float = Field(3.0, gt=0.0, description="D of eq. 2.5")
+    popsize: int = Field(8, ge=2, le=200)
+    maxiter: int = Field(15, ge=1, le=1000)
+    kappa: str = Field("paper", pattern="^(paper|chord)$")
+
+
+def _run_de_apf(sc: Scenario, seed: int, o: DEAPFOptionsModel) -> dict[str, Any]:
+    from usvstation.planning.seeds.de_apf import DEAPFOptions, plan_de_apf
+
+    def core(s: Scenario, world: World, target: np.ndarray, cruise: float,
+             rng: np.random.Generator) -> tuple:
+        start = np.array([s.start.x, s.start.y])
+        dist = float(np.hypot(*(target - start)))
+        step = o.step_m or float(np.clip(dist / 40.0, 0.5, 5.0))
+        do = DEAPFOptions(step=step, turn_radius=o.turn_radius_m, popsize=o.popsize,
+                          maxiter=o.maxiter, paper_kappa=o.kappa == "paper")
+        return plan_de_apf(start, target, world, cruise, int(rng.integers(2**31)), do)
+
+    return _drive(sc, seed, o, "de-apf", core)
+
+
+_register(PlannerInfo(
+    "replan-ga", "002", "GA global path on a grid with local GA re-planning on collision course",
+    (MOVING, REPLAN, RUN_IN, SEEDED), ReplanGAOptions, _run_replan_ga))
+_register(PlannerInfo(
+    "de-apf", "003", "Potential field with parameters evolved by differential evolution",
+    (MOVING_TIMED, RUN_IN, SEEDED), DEAPFOptionsModel, _run_de_apf))
+_ORDER = ("iga", "colregs-ga", "replan-ga", "de-apf", "rrt-star", "bspline-rrt-star",
+          "vpf-rrt-star")
+PLANNERS = {k: PLANNERS[k] for k in _ORDER}
