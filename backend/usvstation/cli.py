@@ -57,7 +57,10 @@ def build_parser() -> argparse.ArgumentParser:
         ),
     )
     plan.add_argument("scenario", help="scenario JSON file, or the name of a bundled scenario")
-    plan.add_argument("--planner", default="iga", choices=["iga"], help="planner (default iga)")
+    plan.add_argument("--planner", default="iga", metavar="NAME",
+                      help="planner (default iga; list: GET /api/planners or docs/planners.md): "
+                      "iga, colregs-ga, replan-ga, de-apf, rrt-star, bspline-rrt-star, "
+                      "vpf-rrt-star")
     plan.add_argument("--seed", type=int, default=None,
                       help="random seed (default: the scenario's, else 1)")
     plan.add_argument("--json", action="store_true", help="print the plan as JSON")
@@ -156,12 +159,15 @@ def main(argv: list[str] | None = None) -> int:
 def _cmd_plan(args: argparse.Namespace) -> int:
     from pydantic import ValidationError
 
-    from usvstation.planning.plan import NoFeasiblePlan, plan_scenario
+    from usvstation.planning.errors import NoFeasiblePlan
+    from usvstation.planning.registry import PlannerOptionError, plan_with
     from usvstation.scenario import ScenarioError, format_validation_error, load_scenario
 
     try:
         scenario = load_scenario(args.scenario)
-        plan = plan_scenario(scenario, planner=args.planner, seed=args.seed, **dict(args.settings))
+        plan = plan_with(scenario, args.planner, args.seed, **dict(args.settings))
+    except PlannerOptionError as exc:
+        raise CliError(f"invalid option: {exc}", EXIT_INVALID) from None
     except ScenarioError as exc:
         raise CliError(f"invalid scenario: {exc}", EXIT_INVALID) from None
     except ValidationError as exc:
@@ -190,9 +196,12 @@ def format_plan(plan: dict[str, Any]) -> str:
         f"{plan['scenario']}: {plan['planner']} plan, seed {plan['seed']}: "
         f"{len(plan['waypoints'])} waypoints, {m['length_m']:.1f} m in {m['duration_s']:.1f} s, "
         f"min clearance {clearance}",
-        f"fitness {m['fitness']:.4f} (Fit_d {m['fit_d']:.3f}, Fit_T {m['fit_t']:.2f} s, "
-        f"Fit_ang {m['fit_ang']:.3f}, Fit_mal {m['fit_mal']:.2f} m); "
-        f"{m['generations']} generations in {m['elapsed_s'] * 1000:.0f} ms ({m['stop_reason']})",
+        (f"fitness {m['fitness']:.4f} (Fit_d {m['fit_d']:.3f}, Fit_T {m['fit_t']:.2f} s, "
+         f"Fit_ang {m['fit_ang']:.3f}, Fit_mal {m['fit_mal']:.2f} m); "
+         f"{m['generations']} generations in {m['elapsed_s'] * 1000:.0f} ms ({m['stop_reason']})")
+        if "fit_d" in m else
+        (f"normalisation index {m.get('normalization_index', 0):.3f}, total turn "
+         f"{m.get('total_turn_deg', 0):.1f} deg; planned in {m['elapsed_s'] * 1000:.0f} ms"),
         "",
         f"{'#':>3} {'x (m)':>9} {'y (m)':>9} {'t (s)':>8} {'speed (m/s)':>12} "
         f"{'heading (deg)':>14}",

@@ -25,6 +25,7 @@ from pydantic import BaseModel, ConfigDict, Field
 from usvstation import __version__
 from usvstation.api.auth import require_token
 from usvstation.api.console import default_frontend_dir, mount_console
+from usvstation.api.planners import PlannerName, planners_router
 from usvstation.scenario import Scenario
 from usvstation.services.boat import BoatError
 from usvstation.services.export import FORMATS, export_chunks, planned_route
@@ -38,7 +39,7 @@ class PlanRequest(BaseModel):
 
     model_config = ConfigDict(extra="forbid")
     scenario: Scenario | None = None
-    planner: Literal["iga"] = "iga"
+    planner: PlannerName = "iga"
     seed: int | None = Field(None, ge=0, le=2**31 - 1)
 
 
@@ -204,6 +205,7 @@ def create_app(station: Station) -> FastAPI:
         finally:
             station.hub.unsubscribe(sub)
 
+    app.include_router(planners_router())
     mount_console(app, station.settings.frontend_dir or default_frontend_dir())
     return app
 

@@ -22,14 +22,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from enum import Enum
+from enum import StrEnum
 
 import numpy as np
 
 EPS = 1e-9
 
 
-class Encounter(str, Enum):
+class Encounter(StrEnum):
     HEAD_ON = "head-on"
     CROSSING_GIVE_WAY = "crossing-give-way"
     CROSSING_STAND_ON = "crossing-stand-on"

@@ -66,7 +66,8 @@ class SeedOptions(BaseModel):
 
 
 class RRTStarOptions(SeedOptions):
-    step_m: float | None = Field(None, gt=0.0, description="steer step p; default dist/12 in [2, 20]")
+    step_m: float | None = Field(None, gt=0.0,
+                                 description="steer step p; default dist/12 in [2, 20]")
     iterations: int = Field(1500, ge=50, le=200_000)
     goal_bias: float = Field(0.05, ge=0.0, le=1.0)
 
@@ -204,7 +205,7 @@ class PlannerOptionError(ValueError):
     """Bad planner option; the message is one line naming the field."""
 
 
-def plan(scenario: Scenario, name: str = "iga", seed: int | None = None,
+def plan_with(scenario: Scenario, name: str = "iga", seed: int | None = None,
          **options: Any) -> dict[str, Any]:
     """Plan with the named planner; the plan has passed the independent checker."""
     info = PLANNERS.get(name)
@@ -289,7 +290,8 @@ def _run_replan_ga(sc: Scenario, seed: int, o: ReplanGAOptions) -> dict[str, Any
 
 
 class DEAPFOptionsModel(SeedOptions):
-    step_m: float | None = Field(None, gt=0.0, description="APF step s; default dist/40 in [0.5, 5]")
+    step_m: float | None = Field(None, gt=0.0,
+                                 description="APF step s; default dist/40 in [0.5, 5]")
     turn_radius_m: float = Field(3.0, gt=0.0, description="D of eq. 2.5")
     popsize: int = Field(8, ge=2, le=200)
     maxiter: int = Field(15, ge=1, le=1000)

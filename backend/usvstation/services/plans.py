@@ -19,10 +19,10 @@ from usvstation.store.db import Store, utc_now
 
 def plan_in_worker(scenario: dict[str, Any], planner: str, seed: int | None) -> dict[str, Any]:
     """Runs in a worker process: validate and plan; NoFeasiblePlan propagates."""
-    from usvstation.planning.plan import plan_scenario
+    from usvstation.planning.registry import plan_with
     from usvstation.scenario import parse_scenario
 
-    return plan_scenario(parse_scenario(scenario), planner=planner, seed=seed)
+    return plan_with(parse_scenario(scenario), planner, seed)
 
 
 WORKER_NICENESS = 19
@@ -44,7 +44,7 @@ def init_worker() -> None:
 
 
 def _warm_up() -> bool:
-    import usvstation.planning.plan  # noqa: F401  (import numpy/scipy once per worker)
+    import usvstation.planning.registry  # noqa: F401  (import numpy/scipy once per worker)
 
     return True
 

@@ -114,7 +114,10 @@ def plan_colregs_ga(start: np.ndarray, heading: float, speed0: float, target: np
         bearing, half, rng_o = _sectors(p, world, t + 1.0)
         watch = rng_o < o.d_ca
 
-        def fitness(genes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        def fitness(genes: np.ndarray, p: np.ndarray = p, psi: float = psi, v: float = v,
+                    t: float = t, bearing: np.ndarray = bearing, half: np.ndarray = half,
+                    watch: np.ndarray = watch, starboard_only: bool = starboard_only,
+                    stand_on: bool = stand_on) -> tuple[np.ndarray, np.ndarray]:
             a, r = genes[:, 0], genes[:, 1]
             v1 = np.clip(v + a, vmin, vmax)
             psi1 = psi + r

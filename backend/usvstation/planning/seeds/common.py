@@ -58,7 +58,7 @@ class World:
         cx, cy, r, ri = [], [], [], []
         for i in range(self.count):
             travel = math.hypot(self.vx[i], self.vy[i]) * horizon_s
-            n = 1 + int(math.ceil(travel / max(self.radius[i], 0.5)))
+            n = 1 + math.ceil(travel / max(self.radius[i], 0.5))
             s = np.linspace(0.0, horizon_s, n)
             cx.append(self.cx[i] + self.vx[i] * s)
             cy.append(self.cy[i] + self.vy[i] * s)

@@ -71,7 +71,7 @@ def ga_path(start: np.ndarray, goal: np.ndarray, world: World, cruise: float, t0
 
     pop = rng.integers(0, o.grid + 1, size=(o.population, o.waypoints, 2))
     line = start + np.linspace(0, 1, o.waypoints + 2)[1:-1, None] * (goal - start)
-    seeds = [line] + list(seed_paths or [])
+    seeds = [line, *list(seed_paths or [])]
     for k, sp in enumerate(seeds[: o.population]):
         pop[k] = np.clip(np.rint((sp - lo) / cell), 0, o.grid).astype(int)
     f, nh = _evaluate(decode(pop), world, cruise, t0)
