@@ -167,8 +167,9 @@ def plan_colregs_ga(start: np.ndarray, heading: float, speed0: float, target: np
         pop = rng.uniform(lo, hi, size=(o.population, 2))
         f, sect = fitness(pop)
         best = pop[int(np.argmax(f))].copy()
-        best_val, stall, g = float(f.max()), 0, 0
+        best_val, stall, used = float(f.max()), 0, 0
         for g in range(1, o.generations + 1):
+            used = g
             w = f - f.min() + 1e-12
             idx = rng.choice(o.population, size=o.population, p=w / w.sum())
             parents = pop[idx]
@@ -194,7 +195,7 @@ def plan_colregs_ga(start: np.ndarray, heading: float, speed0: float, target: np
                 stall += 1
                 if stall >= o.stall:
                     break
-        gens.append(g)
+        gens.append(used)
         best_f.append(best_val)
         v = float(np.clip(v + best[0], vmin, vmax))
         psi += float(best[1])
