@@ -118,7 +118,7 @@ def build_parser() -> argparse.ArgumentParser:
                      help="stop after this many seconds (default: run until interrupted)")
 
     bench = sub.add_parser("bench", help="run a benchmark and print its figures")
-    bench.add_argument("name", choices=["planner", "tracking", "link", "server"],
+    bench.add_argument("name", choices=["planner", "tracking", "link", "server", "compare"],
                        help="which benchmark")
     bench.add_argument("--json", action="store_true", help="print one JSON object (default)")
     bench.add_argument("--scenarios", type=Path, help="folder of scenarios (default: public suite)")
@@ -129,6 +129,13 @@ def build_parser() -> argparse.ArgumentParser:
                        help="fewer repetitions, for a smoke test (figures not for the record)")
     bench.add_argument("--markdown", type=Path, metavar="JSON",
                        help="print the tables for RESULTS.md from a saved --json result")
+    bench.add_argument("--planners", help="compare: comma-separated planner names (default all)")
+    bench.add_argument("--families", help="compare: comma-separated families (default all: "
+                       "recovery, transit, dense, colregs, traps)")
+    bench.add_argument("--hidden", type=int, default=6,
+                       help="compare: seeded random recoveries beside the public suite")
+    bench.add_argument("--plots", type=Path, help="compare: folder for the SVG figures")
+    _add_campaign_parser(sub)
     return parser
 
 
@@ -144,6 +151,8 @@ def main(argv: list[str] | None = None) -> int:
             return _cmd_bench(args)
         if args.command == "sim":
             return _cmd_sim(args)
+        if args.command == "campaign":
+            return _cmd_campaign(args)
     except CliError as exc:
         print(f"usv-station {args.command}: {exc}", file=sys.stderr)
         return exc.code
@@ -247,6 +256,8 @@ def _cmd_sim(args: argparse.Namespace) -> int:
 
 
 def _cmd_bench(args: argparse.Namespace) -> int:
+    if args.name == "compare":
+        return _cmd_bench_compare(args)
     if args.name == "server":
         from usvstation.bench.server import run_server_bench
 
@@ -283,6 +294,64 @@ def _cmd_bench(args: argparse.Namespace) -> int:
     except (FileNotFoundError, ValueError) as exc:
         raise CliError(str(exc), EXIT_INVALID) from None
     print(json.dumps(result, indent=2))
+    return EXIT_OK
+
+
+def _cmd_bench_compare(args: argparse.Namespace) -> int:
+    from usvstation.bench.compare import render_markdown, run_compare
+
+    if args.markdown:
+        try:
+            print(render_markdown(json.loads(args.markdown.read_text(encoding="utf-8"))), end="")
+        except (OSError, ValueError, KeyError) as exc:
+            raise CliError(f"cannot render {args.markdown}: {exc}", EXIT_INVALID) from None
+        return EXIT_OK
+    try:
+        result = run_compare(
+            planners=args.planners.split(",") if args.planners else None,
+            families=args.families.split(",") if args.families else None,
+            seeds=args.seeds if args.seeds != 5 else 2, hidden=args.hidden, plots=args.plots,
+            progress=lambda msg: print(msg, file=sys.stderr, flush=True))
+    except ValueError as exc:
+        raise CliError(str(exc), EXIT_INVALID) from None
+    print(json.dumps(result, indent=2))
+    return EXIT_OK
+
+
+def _add_campaign_parser(sub: Any) -> None:
+    camp = sub.add_parser(
+        "campaign", help="run or report a campaign of many planning episodes",
+        description=("run SPEC.toml: the product of planners, families, seeds and disturbances, "
+                     "on a local process pool (default) or Ray; resumable; results in one "
+                     "Parquet file. report DIR: success table with confidence intervals."))
+    csub = camp.add_subparsers(dest="action", metavar="ACTION", required=True)
+    run = csub.add_parser("run", help="run (or resume) a campaign")
+    run.add_argument("spec", type=Path, help="campaign TOML file (docs/planners.md)")
+    run.add_argument("--out", type=Path, required=True, help="campaign folder")
+    run.add_argument("--ray", metavar="auto|local|ADDRESS",
+                     help="run on Ray: 'local' starts one here, 'auto' or an address joins one")
+    run.add_argument("--workers", type=int, default=None, help="pool size (default CPU count)")
+    run.add_argument("--no-progress", action="store_true", help="no progress bar")
+    rep = csub.add_parser("report", help="tables with confidence intervals")
+    rep.add_argument("dir", type=Path, help="campaign folder")
+    rep.add_argument("--json", action="store_true", help="print JSON")
+    rep.add_argument("--plots", action="store_true", help="also write SVG box plots into DIR")
+
+
+def _cmd_campaign(args: argparse.Namespace) -> int:
+    from usvstation.campaign.report import format_report, report
+    from usvstation.campaign.run import CampaignError, run_campaign
+
+    try:
+        if args.action == "run":
+            summary = run_campaign(args.spec, args.out, ray=args.ray, workers=args.workers,
+                                   progress=not args.no_progress)
+            print(json.dumps(summary, indent=2))
+            return EXIT_OK
+        result = report(args.dir, plots=args.plots)
+    except CampaignError as exc:
+        raise CliError(str(exc), EXIT_INVALID) from None
+    print(json.dumps(result, indent=2) if args.json else format_report(result))
     return EXIT_OK
 
 

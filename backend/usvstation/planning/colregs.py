@@ -217,15 +217,22 @@ class TargetCompliance:
     passed: bool
 
 
+def on_collision_course(rng: float, risk: Risk, detect_range_m: float) -> bool:
+    """Detected (range within the sensor range) and closing with DCPA inside l2 (PROPOSED)."""
+    return rng <= detect_range_m and abs(risk.dcpa) <= risk.l2 and risk.tcpa > 0.0
+
+
 def compliance(track: np.ndarray, times: np.ndarray, targets: np.ndarray, target_vel: np.ndarray,
-               scale_m: float = 20.0, action_deg: float = 15.0, headon_deg: float = 12.0
-               ) -> list[TargetCompliance]:
+               scale_m: float = 20.0, action_deg: float = 15.0, headon_deg: float = 12.0,
+               detect_range_m: float = 150.0) -> list[TargetCompliance]:
     """COLREGs score per target of an own-ship track (digest 9.3 "colregs").
 
     track (K, 2) positions at `times` (K,); targets (M, 2) at t = 0 with
     velocities (M, 2), all in one right-handed frame. Latches each target's
     class at first risk; the first significant action is a heading change of
-    at least `action_deg` from the heading at latch time. Head-on and
+    at least `action_deg` from the heading at latch time. A target is also
+    latched when first detected on a collision course (`on_collision_course`),
+    so an early avoidance still counts as an action in its encounter. Head-on and
     crossing give-way pass with a starboard (clockwise) action or none
     needed (the risk never reached 1); stand-on passes when no action
     happens before in-extremis (risk >= 0.9 or range <= l1); overtaking give-way
@@ -254,7 +261,9 @@ def compliance(track: np.ndarray, times: np.ndarray, targets: np.ndarray, target
             r = fuzzy_risk(dcpa, tcpa, float(np.hypot(*rel)), beta, scale_m, opening=opening)
             risk_max = max(risk_max, r.u)
             if enc is None:
-                enc = latch.update(j, r.u, beta, alpha)
+                trig = 1.0 if on_collision_course(float(np.hypot(*(pt - track[k]))), r,
+                                                  detect_range_m) else r.u
+                enc = latch.update(j, trig, beta, alpha)
                 h0 = heading[k]
                 continue
             rng = float(np.hypot(*(pt - track[k])))

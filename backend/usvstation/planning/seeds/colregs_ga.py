@@ -46,6 +46,7 @@ class GAStepOptions:
     risk_scale_m: float = 20.0
     u_act: float = 0.3
     lookahead_s: float = 12.0
+    detect_range_m: float = 150.0
     improved: bool = True   # retention, deletion and replacement (Tab. III "improved")
     paper_fitness: bool = False
     max_steps: int = 2000
@@ -103,8 +104,9 @@ def plan_colregs_ga(start: np.ndarray, heading: float, speed0: float, target: np
             opening = float((pt - p) @ rel) > 0.0
             risk = cr.fuzzy_risk(dcpa, tcpa, float(np.hypot(*rel)), beta, o.risk_scale_m,
                                  opening=opening)
-            enc = latch.update(int(j), risk.u, beta, alpha)
-            if enc is None or risk.u < o.u_act or tcpa < 0.0:
+            course_set = cr.on_collision_course(float(np.hypot(*(pt - p))), risk, o.detect_range_m)
+            enc = latch.update(int(j), 1.0 if course_set else risk.u, beta, alpha)
+            if enc is None or tcpa < 0.0 or (risk.u < o.u_act and not course_set):
                 continue
             urgent = risk.u >= 0.9 and float(np.hypot(*(pt - p))) <= risk.l1
             if enc in cr.GIVE_WAY_STARBOARD:
