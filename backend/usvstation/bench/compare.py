@@ -23,7 +23,7 @@ from typing import Any
 import numpy as np
 
 from usvstation.planning.errors import NoFeasiblePlan
-from usvstation.planning.registry import planner_names, plan_with
+from usvstation.planning.registry import plan_with, planner_names
 from usvstation.scenario import Scenario, load_scenario, parse_scenario
 
 FAMILIES = ("recovery", "transit", "dense", "colregs", "traps")
