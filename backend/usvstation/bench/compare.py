@@ -327,7 +327,8 @@ def render_markdown(result: dict[str, Any]) -> str:
                 f"{_f(e.get('colregs_score'), 2)} |")
     t = result["table_004"]
     lines += ["", "Paper 004 Tab. 5/6 shape (dense family, means over maps and seeds):", "",
-              "| algorithm | length m | TTA deg | plan ms | sailing s | NI |", "|---|---|---|---|---|---|"]
+              "| algorithm | length m | TTA deg | plan ms | sailing s | NI |",
+              "|---|---|---|---|---|---|"]
     for pl in ("rrt-star", "bspline-rrt-star", "vpf-rrt-star"):
         if pl in t:
             e = t[pl]

@@ -138,7 +138,7 @@ def _ray_results(todo: list[dict[str, Any]], address: str, workers: int | None
     try:
         import ray
     except ImportError:
-        raise CampaignError("--ray: Ray is not installed (pip install 'usv-station[dev]')") from None
+        raise CampaignError("--ray: Ray is not installed (pip install ray)") from None
     started = False
     if not ray.is_initialized():
         if address == "local":
