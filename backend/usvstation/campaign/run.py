@@ -180,6 +180,8 @@ def run_campaign(spec_path: Path, out: Path, ray: str | None = None, workers: in
     t0 = time.perf_counter()
     ran = 0
     with log.open("a", encoding="utf-8") as fh:
+        if log.stat().st_size and not log.read_bytes().endswith(b"\n"):
+            fh.write("\n")  # a line cut by an interruption stays apart (and is re-run)
         for row in results:
             fh.write(json.dumps(row) + "\n")
             fh.flush()
