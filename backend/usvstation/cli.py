@@ -17,6 +17,9 @@ from usvstation import __version__
 from usvstation.runtime import tune_allocator
 
 EXIT_OK, EXIT_ERROR, EXIT_INVALID, EXIT_INFEASIBLE = 0, 1, 2, 3
+# planning.registry's names, listed here so that --help does not import NumPy (tested equal)
+PLANNER_NAMES = ["iga", "colregs-ga", "replan-ga", "de-apf", "rrt-star", "bspline-rrt-star",
+                 "vpf-rrt-star"]
 
 
 class CliError(Exception):
@@ -57,10 +60,8 @@ def build_parser() -> argparse.ArgumentParser:
         ),
     )
     plan.add_argument("scenario", help="scenario JSON file, or the name of a bundled scenario")
-    plan.add_argument("--planner", default="iga", metavar="NAME",
-                      help="planner (default iga; list: GET /api/planners or docs/planners.md): "
-                      "iga, colregs-ga, replan-ga, de-apf, rrt-star, bspline-rrt-star, "
-                      "vpf-rrt-star")
+    plan.add_argument("--planner", default="iga", choices=PLANNER_NAMES,
+                      help="planner (default iga; docs/planners.md)")
     plan.add_argument("--seed", type=int, default=None,
                       help="random seed (default: the scenario's, else 1)")
     plan.add_argument("--json", action="store_true", help="print the plan as JSON")
