@@ -107,7 +107,7 @@ def _drive(scenario: Scenario, seed: int, opts: SeedOptions, name: str,
                                 "inflation_m": round(margin, 6)}, cut=opts.corner_cut_m,
                                speeds=speeds)
         except NoFeasiblePlan as exc:
-            last = str(exc).removeprefix("no feasible plan: ")
+            last = str(exc).removeprefix("no feasible plan: ").removeprefix(f"{name}: ")
             continue
         plan["metrics"]["elapsed_s"] = round(time.perf_counter() - t0, 6)
         if margin < margins[0]:

@@ -124,7 +124,7 @@ def speed_profile(pts: np.ndarray, scenario: Scenario, cruise: float,
     seg = np.hypot(*np.diff(pts, axis=0).T)
     speeds = np.empty(len(pts))
     speeds[0] = min(max(scenario.start.speed, v.speed_min), v.speed_max)
-    a = v.accel_max * (1.0 - 1e-9)
+    a = v.accel_max * (1.0 - 1e-4)  # margin for the 6-decimal rounding of the plan
     for i, s in enumerate(seg):
         vi = speeds[i]
         goal = cruise if wanted is None else float(np.clip(wanted[i + 1], v.speed_min, v.speed_max))
