@@ -114,7 +114,8 @@ def plan_colregs_ga(start: np.ndarray, heading: float, speed0: float, target: np
             elif enc in (cr.Encounter.CROSSING_STAND_ON, cr.Encounter.OVERTAKING_STAND_ON):
                 stand_on = stand_on or not urgent
         bearing, half, rng_o = _sectors(p, world, t + 1.0)
-        watch = rng_o < o.d_ca
+        # an obstacle beyond the goal does not block it (PROPOSED; the paper has no goal rule)
+        watch = (rng_o < o.d_ca) & (rng_o - world.inflated < float(np.hypot(*(target - p))))
 
         def fitness(genes: np.ndarray, p: np.ndarray = p, psi: float = psi, v: float = v,
                     t: float = t, bearing: np.ndarray = bearing, half: np.ndarray = half,
