@@ -120,7 +120,8 @@ def plan_colregs_ga(start: np.ndarray, heading: float, speed0: float, target: np
         def fitness(genes: np.ndarray, p: np.ndarray = p, psi: float = psi, v: float = v,
                     t: float = t, bearing: np.ndarray = bearing, half: np.ndarray = half,
                     watch: np.ndarray = watch, starboard_only: bool = starboard_only,
-                    stand_on: bool = stand_on) -> tuple[np.ndarray, np.ndarray]:
+                    stand_on: bool = stand_on, reach: float = reach
+                    ) -> tuple[np.ndarray, np.ndarray]:
             a, r = genes[:, 0], genes[:, 1]
             v1 = np.clip(v + a, vmin, vmax)
             psi1 = psi + r
@@ -139,6 +140,12 @@ def plan_colregs_ga(start: np.ndarray, heading: float, speed0: float, target: np
                 cy = world.cy[None, None, :] + world.vy[None, None, :] * times[None, :, None]
                 dist = np.hypot(all_pts[..., 0, None] - cx, all_pts[..., 1, None] - cy) \
                     - world.inflated
+                # the look-ahead ends where it reaches the goal
+                at_goal = np.hypot(*np.moveaxis(all_pts - target, 2, 0)) <= reach
+                past = np.cumsum(at_goal, axis=1) > 0
+                past[:, 1:] = past[:, :-1].copy()
+                past[:, 0] = False
+                dist = np.where(past[..., None], np.inf, dist)
                 near = dist.min(axis=1)
                 hit_now = world.segments_hit(np.broadcast_to(p, p1.shape), t, p1, t + 1.0)
                 d0 = near[:, ~world.moving].min(axis=1) if (~world.moving).any() \
