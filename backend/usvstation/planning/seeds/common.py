@@ -166,6 +166,12 @@ def limit_turns(pts: np.ndarray, turn_max_deg: float, cut: float) -> np.ndarray:
     new corner turns half as much. Endpoints never move.
     """
     pts = dedupe(pts)
+    for _ in range(len(pts)):  # a reversal (turn ~180 deg) cannot be cut: drop the spike
+        tr = turns_deg(pts)
+        spikes = np.flatnonzero(tr > 179.0) + 1
+        if spikes.size == 0:
+            break
+        pts = dedupe(np.delete(pts, spikes[:1], axis=0))
     for _ in range(12):
         tr = turns_deg(pts)
         bad = np.flatnonzero(tr > turn_max_deg - 0.5) + 1
