@@ -136,6 +136,8 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("--hidden", type=int, default=6,
                        help="compare: seeded random recoveries beside the public suite")
     bench.add_argument("--plots", type=Path, help="compare: folder for the SVG figures")
+    bench.add_argument("--ompl", action="store_true",
+                       help="compare: add OMPL's RRT*, Informed RRT* and BIT* (pip install ompl)")
     _add_campaign_parser(sub)
     return parser
 
@@ -312,6 +314,7 @@ def _cmd_bench_compare(args: argparse.Namespace) -> int:
             planners=args.planners.split(",") if args.planners else None,
             families=args.families.split(",") if args.families else None,
             seeds=args.seeds if args.seeds != 5 else 2, hidden=args.hidden, plots=args.plots,
+            ompl=args.ompl,
             progress=lambda msg: print(msg, file=sys.stderr, flush=True))
     except ValueError as exc:
         raise CliError(str(exc), EXIT_INVALID) from None

@@ -137,6 +137,25 @@ def evaluate(scenario: Scenario, family: str, planner: str, seed: int) -> dict[s
     except NoFeasiblePlan as exc:
         return {**row, "success": False, "error": str(exc)[:300],
                 "plan_time_ms": (time.perf_counter() - t0) * 1000.0}
+    return _row_from_plan(row, scenario, family, plan, (time.perf_counter() - t0) * 1000.0)
+
+
+def evaluate_ompl(scenario: Scenario, family: str, planner: str, seed: int) -> dict[str, Any]:
+    """One OMPL baseline episode in its own process (bench.ompl_baseline)."""
+    from usvstation.bench.ompl_baseline import run_in_process
+
+    row: dict[str, Any] = {"planner": f"ompl:{planner}", "family": family,
+                           "scenario": scenario.name, "seed": seed}
+    t0 = time.perf_counter()
+    res = run_in_process(scenario.model_dump(mode="json"), planner, seed)
+    if not res["success"]:
+        return {**row, "success": False, "error": res["error"][:300],
+                "plan_time_ms": (time.perf_counter() - t0) * 1000.0}
+    return _row_from_plan(row, scenario, family, res["plan"], res["plan_time_ms"])
+
+
+def _row_from_plan(row: dict[str, Any], scenario: Scenario, family: str, plan: dict[str, Any],
+                   plan_time_ms: float) -> dict[str, Any]:
     m = plan["metrics"]
     wps = plan["waypoints"]
     pts = np.array([[w["x"], w["y"]] for w in wps])
@@ -146,7 +165,7 @@ def evaluate(scenario: Scenario, family: str, planner: str, seed: int) -> dict[s
     row.update(success=True, error=None, length_m=pm["length_m"],
                normalization_index=pm["normalization_index"], duration_s=m["duration_s"],
                min_clearance_m=m["min_clearance_m"], total_turn_deg=pm["total_turn_deg"],
-               max_turn_deg=pm["max_turn_deg"], plan_time_ms=(time.perf_counter() - t0) * 1000.0,
+               max_turn_deg=pm["max_turn_deg"], plan_time_ms=plan_time_ms,
                replan_latency_ms=m.get("replan_latency_ms", []))
     if family == "colregs":
         row.update(colregs_metrics(scenario, plan))
@@ -176,8 +195,14 @@ def colregs_metrics(scenario: Scenario, plan: dict[str, Any]) -> dict[str, Any]:
 def run_compare(planners: list[str] | None = None, families: list[str] | None = None,
                 seeds: int = 2, hidden: int = 6, dense_maps: int = 2,
                 progress: Callable[[str], None] | None = None,
-                plots: Path | None = None) -> dict[str, Any]:
+                plots: Path | None = None, ompl: bool = False) -> dict[str, Any]:
+    """Every planner on every family; `ompl` adds OMPL RRT*, Informed RRT*, BIT* if installed."""
     planners = planners or planner_names()
+    if ompl:
+        from usvstation.bench.ompl_baseline import OMPL_PLANNERS, available
+
+        if not available():
+            raise ValueError("--ompl: OMPL is not installed (pip install ompl)")
     families = families or list(FAMILIES)
     rows = []
     for fam in families:
@@ -190,6 +215,13 @@ def run_compare(planners: list[str] | None = None, families: list[str] | None = 
                         progress(f"{fam} {sc.name} {pl} seed {seed}: "
                                  f"{'ok' if row['success'] else 'FAIL'} "
                                  f"{row['plan_time_ms']:.0f} ms")
+            for pl in (OMPL_PLANNERS if ompl else ()):
+                for seed in range(1, seeds + 1):
+                    row = evaluate_ompl(sc, fam, pl, seed)
+                    rows.append(row)
+                    if progress:
+                        progress(f"{fam} {sc.name} ompl:{pl} seed {seed}: "
+                                 f"{'ok' if row['success'] else 'FAIL'}")
     result = {"planners": planners, "families": families, "seeds": seeds,
               "summary": summarise(rows), "table_004": table_004(rows),
               "replan_002": replan_002(rows), "colregs_001": colregs_001(rows, seeds, progress),
@@ -245,7 +277,8 @@ def table_004(rows: list[dict[str, Any]]) -> dict[str, Any]:
     out["pairs"] = len(ratios["vpf_over_rrt_length"])
     out["paper"] = PAPER_004
     dense = [r for r in rows if r["family"] == "dense"]
-    for pl in ("rrt-star", "bspline-rrt-star", "vpf-rrt-star"):
+    for pl in ("rrt-star", "bspline-rrt-star", "vpf-rrt-star", "ompl:RRTstar",
+               "ompl:InformedRRTstar", "ompl:BITstar"):
         rs = [r for r in dense if r["planner"] == pl and r["success"]]
         if rs:
             out[pl] = {k: round(float(np.mean([r[k] for r in rs])), 4) for k in
@@ -329,7 +362,8 @@ def render_markdown(result: dict[str, Any]) -> str:
     lines += ["", "Paper 004 Tab. 5/6 shape (dense family, means over maps and seeds):", "",
               "| algorithm | length m | TTA deg | plan ms | sailing s | NI |",
               "|---|---|---|---|---|---|"]
-    for pl in ("rrt-star", "bspline-rrt-star", "vpf-rrt-star"):
+    for pl in ("rrt-star", "bspline-rrt-star", "vpf-rrt-star", "ompl:RRTstar",
+               "ompl:InformedRRTstar", "ompl:BITstar"):
         if pl in t:
             e = t[pl]
             lines.append(f"| {pl} | {e['length_m']:.1f} | {e['total_turn_deg']:.1f} | "
