@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Any
 
 from fastapi import APIRouter
 from pydantic import AfterValidator, BaseModel
@@ -28,8 +28,9 @@ class PlannerDescription(BaseModel):
     capabilities: list[str]
 
 
-def planners_router() -> APIRouter:
-    router = APIRouter()
+def planners_router(dependencies: list[Any] | None = None) -> APIRouter:
+    """The router; `dependencies` carries the read-token check of the app (viewer or operator)."""
+    router = APIRouter(dependencies=dependencies or [])
 
     @router.get("/api/planners", tags=["plans"])
     async def list_planners() -> list[PlannerDescription]:
