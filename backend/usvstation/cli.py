@@ -17,6 +17,9 @@ from usvstation import __version__
 from usvstation.runtime import tune_allocator
 
 EXIT_OK, EXIT_ERROR, EXIT_INVALID, EXIT_INFEASIBLE = 0, 1, 2, 3
+# planning.registry's names, listed here so that --help does not import NumPy (tested equal)
+PLANNER_NAMES = ["iga", "colregs-ga", "replan-ga", "de-apf", "rrt-star", "bspline-rrt-star",
+                 "vpf-rrt-star"]
 
 
 class CliError(Exception):
@@ -57,7 +60,8 @@ def build_parser() -> argparse.ArgumentParser:
         ),
     )
     plan.add_argument("scenario", help="scenario JSON file, or the name of a bundled scenario")
-    plan.add_argument("--planner", default="iga", choices=["iga"], help="planner (default iga)")
+    plan.add_argument("--planner", default="iga", choices=PLANNER_NAMES,
+                      help="planner (default iga; docs/planners.md)")
     plan.add_argument("--seed", type=int, default=None,
                       help="random seed (default: the scenario's, else 1)")
     plan.add_argument("--json", action="store_true", help="print the plan as JSON")
@@ -169,7 +173,8 @@ def build_parser() -> argparse.ArgumentParser:
     key_new.add_argument("path", type=Path, help="key file to create (must not exist)")
 
     bench = sub.add_parser("bench", help="run a benchmark and print its figures")
-    bench.add_argument("name", choices=["planner", "tracking", "link", "server", "live"],
+    bench.add_argument("name", choices=["planner", "tracking", "link", "server", "live",
+                                        "compare"],
                        help="which benchmark")
     bench.add_argument("--json", action="store_true", help="print one JSON object (default)")
     bench.add_argument("--scenarios", type=Path, help="folder of scenarios (default: public suite)")
@@ -184,6 +189,15 @@ def build_parser() -> argparse.ArgumentParser:
                        help="tracking: add turning circle, zig-zags, pull-out and heading steps")
     bench.add_argument("--markdown", type=Path, metavar="JSON",
                        help="print the tables for RESULTS.md from a saved --json result")
+    bench.add_argument("--planners", help="compare: comma-separated planner names (default all)")
+    bench.add_argument("--families", help="compare: comma-separated families (default all: "
+                       "recovery, transit, dense, colregs, traps)")
+    bench.add_argument("--hidden", type=int, default=6,
+                       help="compare: seeded random recoveries beside the public suite")
+    bench.add_argument("--plots", type=Path, help="compare: folder for the SVG figures")
+    bench.add_argument("--ompl", action="store_true",
+                       help="compare: add OMPL's RRT*, Informed RRT* and BIT* (pip install ompl)")
+    _add_campaign_parser(sub)
     return parser
 
 
@@ -201,6 +215,8 @@ def main(argv: list[str] | None = None) -> int:
             return _cmd_sim(args)
         if args.command == "link-key":
             return _cmd_link_key(args)
+        if args.command == "campaign":
+            return _cmd_campaign(args)
     except CliError as exc:
         print(f"usv-station {args.command}: {exc}", file=sys.stderr)
         return exc.code
@@ -223,16 +239,20 @@ def _cmd_plan(args: argparse.Namespace) -> int:
         overrides = dict(args.settings)
         if args.time_budget is not None:
             overrides["time_budget_s"] = args.time_budget
-        scenario.planner_options(**overrides)
+        if args.planner == "iga":
+            scenario.planner_options(**overrides)
     except ScenarioError as exc:
         raise CliError(f"invalid scenario: {exc}", EXIT_INVALID) from None
     except ValidationError as exc:
         raise CliError(f"invalid option: planner.{format_validation_error(exc)}",
                        EXIT_INVALID) from None
-    from usvstation.planning.plan import NoFeasiblePlan, plan_scenario
+    from usvstation.planning.errors import NoFeasiblePlan
+    from usvstation.planning.registry import PlannerOptionError, plan_with
 
     try:
-        plan = plan_scenario(scenario, planner=args.planner, seed=args.seed, **overrides)
+        plan = plan_with(scenario, args.planner, args.seed, **overrides)
+    except PlannerOptionError as exc:
+        raise CliError(f"invalid option: {exc}", EXIT_INVALID) from None
     except ScenarioError as exc:
         raise CliError(f"invalid scenario: {exc}", EXIT_INVALID) from None
     except ValidationError as exc:
@@ -261,9 +281,12 @@ def format_plan(plan: dict[str, Any]) -> str:
         f"{plan['scenario']}: {plan['planner']} plan, seed {plan['seed']}: "
         f"{len(plan['waypoints'])} waypoints, {m['length_m']:.1f} m in {m['duration_s']:.1f} s, "
         f"min clearance {clearance}",
-        f"fitness {m['fitness']:.4f} (Fit_d {m['fit_d']:.3f}, Fit_T {m['fit_t']:.2f} s, "
-        f"Fit_ang {m['fit_ang']:.3f}, Fit_mal {m['fit_mal']:.2f} m); "
-        f"{m['generations']} generations in {m['elapsed_s'] * 1000:.0f} ms ({m['stop_reason']})",
+        (f"fitness {m['fitness']:.4f} (Fit_d {m['fit_d']:.3f}, Fit_T {m['fit_t']:.2f} s, "
+         f"Fit_ang {m['fit_ang']:.3f}, Fit_mal {m['fit_mal']:.2f} m); "
+         f"{m['generations']} generations in {m['elapsed_s'] * 1000:.0f} ms ({m['stop_reason']})")
+        if "fit_d" in m else
+        (f"normalisation index {m.get('normalization_index', 0):.3f}, total turn "
+         f"{m.get('total_turn_deg', 0):.1f} deg; planned in {m['elapsed_s'] * 1000:.0f} ms"),
         "",
         f"{'#':>3} {'x (m)':>9} {'y (m)':>9} {'t (s)':>8} {'speed (m/s)':>12} "
         f"{'heading (deg)':>14}",
@@ -339,6 +362,8 @@ def _cmd_bench(args: argparse.Namespace) -> int:
                                 progress=lambda msg: print(msg, file=sys.stderr, flush=True))
         print(json.dumps(result, indent=2))
         return EXIT_OK
+    if args.name == "compare":
+        return _cmd_bench_compare(args)
     if args.name == "server":
         from usvstation.bench.server import run_server_bench
 
@@ -376,6 +401,65 @@ def _cmd_bench(args: argparse.Namespace) -> int:
     except (FileNotFoundError, ValueError) as exc:
         raise CliError(str(exc), EXIT_INVALID) from None
     print(json.dumps(result, indent=2))
+    return EXIT_OK
+
+
+def _cmd_bench_compare(args: argparse.Namespace) -> int:
+    from usvstation.bench.compare import render_markdown, run_compare
+
+    if args.markdown:
+        try:
+            print(render_markdown(json.loads(args.markdown.read_text(encoding="utf-8"))), end="")
+        except (OSError, ValueError, KeyError) as exc:
+            raise CliError(f"cannot render {args.markdown}: {exc}", EXIT_INVALID) from None
+        return EXIT_OK
+    try:
+        result = run_compare(
+            planners=args.planners.split(",") if args.planners else None,
+            families=args.families.split(",") if args.families else None,
+            seeds=args.seeds if args.seeds != 5 else 2, hidden=args.hidden, plots=args.plots,
+            ompl=args.ompl,
+            progress=lambda msg: print(msg, file=sys.stderr, flush=True))
+    except ValueError as exc:
+        raise CliError(str(exc), EXIT_INVALID) from None
+    print(json.dumps(result, indent=2))
+    return EXIT_OK
+
+
+def _add_campaign_parser(sub: Any) -> None:
+    camp = sub.add_parser(
+        "campaign", help="run or report a campaign of many planning episodes",
+        description=("run SPEC.toml: the product of planners, families, seeds and disturbances, "
+                     "on a local process pool (default) or Ray; resumable; results in one "
+                     "Parquet file. report DIR: success table with confidence intervals."))
+    csub = camp.add_subparsers(dest="action", metavar="ACTION", required=True)
+    run = csub.add_parser("run", help="run (or resume) a campaign")
+    run.add_argument("spec", type=Path, help="campaign TOML file (docs/planners.md)")
+    run.add_argument("--out", type=Path, required=True, help="campaign folder")
+    run.add_argument("--ray", metavar="auto|local|ADDRESS",
+                     help="run on Ray: 'local' starts one here, 'auto' or an address joins one")
+    run.add_argument("--workers", type=int, default=None, help="pool size (default CPU count)")
+    run.add_argument("--no-progress", action="store_true", help="no progress bar")
+    rep = csub.add_parser("report", help="tables with confidence intervals")
+    rep.add_argument("dir", type=Path, help="campaign folder")
+    rep.add_argument("--json", action="store_true", help="print JSON")
+    rep.add_argument("--plots", action="store_true", help="also write SVG box plots into DIR")
+
+
+def _cmd_campaign(args: argparse.Namespace) -> int:
+    from usvstation.campaign.report import format_report, report
+    from usvstation.campaign.run import CampaignError, run_campaign
+
+    try:
+        if args.action == "run":
+            summary = run_campaign(args.spec, args.out, ray=args.ray, workers=args.workers,
+                                   progress=not args.no_progress)
+            print(json.dumps(summary, indent=2))
+            return EXIT_OK
+        result = report(args.dir, plots=args.plots)
+    except CampaignError as exc:
+        raise CliError(str(exc), EXIT_INVALID) from None
+    print(json.dumps(result, indent=2) if args.json else format_report(result))
     return EXIT_OK
 
 

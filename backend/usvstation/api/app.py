@@ -29,6 +29,7 @@ from usvstation.api.auth import require_operator, require_viewer
 from usvstation.api.charts import router as charts_router
 from usvstation.api.console import default_frontend_dir, mount_console, mount_docs
 from usvstation.api.guard import Guard, GuardConfig
+from usvstation.api.planners import PlannerName, planners_router
 from usvstation.api.view3d import mount_view3d
 from usvstation.api.world import router as world_router
 from usvstation.scenario import Scenario
@@ -151,7 +152,7 @@ class PlanRequest(BaseModel):
 
     model_config = ConfigDict(extra="forbid")
     scenario: Scenario | None = None
-    planner: Literal["iga"] = "iga"
+    planner: PlannerName = "iga"
     seed: int | None = Field(None, ge=0, le=2**31 - 1)
     from_boat: bool = Field(
         False, description="plan from the boat's latest telemetry (position, heading, speed), "
@@ -397,6 +398,7 @@ def create_app(station: Station) -> FastAPI:
     app.include_router(alerts_router)
     app.include_router(charts_router)
     frontend = station.settings.frontend_dir or default_frontend_dir()
+    app.include_router(planners_router(dependencies=Read))
     mount_docs(app, frontend)
     mount_view3d(app, lambda: station.view.port)
     mount_console(app, frontend)

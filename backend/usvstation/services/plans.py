@@ -60,10 +60,10 @@ class WorkerDied(Exception):
 
 def plan_in_worker(scenario: dict[str, Any], planner: str, seed: int | None) -> dict[str, Any]:
     """Runs in a worker process: validate and plan; NoFeasiblePlan propagates."""
-    from usvstation.planning.plan import plan_scenario
+    from usvstation.planning.registry import plan_with
     from usvstation.scenario import parse_scenario
 
-    return plan_scenario(parse_scenario(scenario), planner=planner, seed=seed)
+    return plan_with(parse_scenario(scenario), planner, seed)
 
 
 def die_with_parent(station_pid: int) -> None:
@@ -145,7 +145,7 @@ def worker_main(conn: Connection, parent_pid: int, memory_mb: int) -> None:
     """A plan worker: ("ready",), then one reply per (scenario, planner, seed) request."""
     die_with_parent(parent_pid)
     init_worker(memory_mb)
-    import usvstation.planning.plan  # noqa: F401  (numpy/scipy once, before the first job)
+    import usvstation.planning.registry  # noqa: F401  (numpy/scipy once, before the first job)
 
     conn.send(("ready", os.getpid()))
     while True:

@@ -1,0 +1,60 @@
+"""SVG figures of `bench compare`: paths overlaid per scenario and box plots per family."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+
+def write_plots(rows: list[dict[str, Any]], folder: Path) -> list[str]:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    folder.mkdir(parents=True, exist_ok=True)
+    written = []
+    from usvstation.bench.compare import family_scenarios
+
+    scen = {}
+    for fam in {r["family"] for r in rows}:
+        for sc in family_scenarios(fam, hidden=0, dense_maps=1):
+            scen[sc.name] = sc
+    for name in ("case2", "transit-002-3", "dense-0-0", "colregs-head-on",
+                 "colregs-crossing-give-way-b", "trap-u-shape"):
+        sel = [r for r in rows if r["scenario"] == name and r["success"] and r["seed"] == 1]
+        if not sel or name not in scen:
+            continue
+        fig, ax = plt.subplots(figsize=(6, 6))
+        for o in scen[name].obstacles:
+            ax.add_patch(plt.Circle((o.x, o.y), o.radius, color="grey", alpha=0.5))
+            if o.vx or o.vy:
+                ax.arrow(o.x, o.y, o.vx * 20, o.vy * 20, color="grey", width=0.2)
+        for r in sel:
+            xy = r["path"]
+            ax.plot([p[0] for p in xy], [p[1] for p in xy], label=r["planner"], lw=1.2)
+        ax.set_aspect("equal")
+        ax.set_title(f"{name}: plans (seed 1)")
+        ax.legend(fontsize=7)
+        path = folder / f"compare-paths-{name}.svg"
+        fig.savefig(path, format="svg")
+        plt.close(fig)
+        written.append(str(path))
+    for metric in ("normalization_index", "plan_time_ms"):
+        fams = sorted({r["family"] for r in rows})
+        fig, axes = plt.subplots(1, len(fams), figsize=(4 * len(fams), 4), squeeze=False)
+        for ax, fam in zip(axes[0], fams, strict=True):
+            pls = sorted({r["planner"] for r in rows if r["family"] == fam})
+            data = [[r[metric] for r in rows if r["family"] == fam and r["planner"] == p
+                     and r["success"]] or [float("nan")] for p in pls]
+            ax.boxplot(data)
+            ax.set_xticks(range(1, len(pls) + 1), pls, rotation=60, fontsize=7)
+            ax.set_title(f"{fam}: {metric}")
+            if metric == "plan_time_ms":
+                ax.set_yscale("log")
+        fig.tight_layout()
+        path = folder / f"compare-box-{metric}.svg"
+        fig.savefig(path, format="svg")
+        plt.close(fig)
+        written.append(str(path))
+    return written

@@ -1,0 +1,77 @@
+"""Campaign SPEC.toml (docs/planners.md "Campaigns").
+
+Required: `planners = [...]` (registry names), `families = [...]`
+(recovery, transit, dense, colregs, traps), `seeds = N` (seeds 1..N).
+Optional: `name` (default the file stem), `disturbances = [0.0, 0.2]`
+(current speeds in m/s, direction `current_dir_deg`, default [0.0]),
+`current_dir_deg = 0.0`, `hidden = 6` (seeded random recoveries beside the
+public suite), `dense_maps = 2` (seeded maps per 004 start/goal pair),
+`options = { "rrt-star" = { iterations = 800 } }` (per-planner options).
+"""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+from typing import Any
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
+
+from usvstation.bench.compare import FAMILIES
+from usvstation.planning.registry import planner_names
+
+
+class CampaignError(ValueError):
+    """A campaign could not be read or run; one line naming the field."""
+
+
+class CampaignSpec(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    name: str = "campaign"
+    planners: list[str] = Field(min_length=1)
+    families: list[str] = Field(min_length=1)
+    seeds: int = Field(ge=1, le=100_000)
+    disturbances: list[float] = Field(default_factory=lambda: [0.0])
+    current_dir_deg: float = 0.0
+    hidden: int = Field(6, ge=0, le=10_000)
+    dense_maps: int = Field(2, ge=1, le=1000)
+    options: dict[str, dict[str, Any]] = Field(default_factory=dict)
+
+    @field_validator("planners")
+    @classmethod
+    def _planners(cls, v: list[str]) -> list[str]:
+        for p in v:
+            if p not in planner_names():
+                raise ValueError(f"unknown planner {p!r}; available: {', '.join(planner_names())}")
+        return v
+
+    @field_validator("families")
+    @classmethod
+    def _families(cls, v: list[str]) -> list[str]:
+        for f in v:
+            if f not in FAMILIES:
+                raise ValueError(f"unknown family {f!r}; available: {', '.join(FAMILIES)}")
+        return v
+
+    @field_validator("disturbances")
+    @classmethod
+    def _dist(cls, v: list[float]) -> list[float]:
+        if any(x < 0 for x in v):
+            raise ValueError("current speeds must be >= 0 m/s")
+        return v
+
+
+def load_spec(path: Path) -> CampaignSpec:
+    try:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise CampaignError(f"{path}: no such campaign file") from None
+    except (OSError, tomllib.TOMLDecodeError) as exc:
+        raise CampaignError(f"{path}: {exc}") from None
+    data.setdefault("name", path.stem)
+    try:
+        return CampaignSpec(**data)
+    except ValidationError as exc:
+        err = exc.errors(include_url=False)[0]
+        loc = ".".join(str(p) for p in err["loc"])
+        raise CampaignError(f"{path}: {loc}: {err['msg'].removeprefix('Value error, ')}") from None

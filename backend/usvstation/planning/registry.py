@@ -1,0 +1,324 @@
+"""One planner interface: every planner by name, its paper and capabilities.
+
+`plan(scenario, name, seed, **options)` returns the stable plan format
+(DESIGN.md "Plan output") or raises NoFeasiblePlan; every plan has passed
+the independent checker (`planning.validate.plan_violations`) before it
+leaves. Options are validated per planner (one line naming the field).
+
+To add a planner: write a function `(scenario, seed, options) -> plan dict`
+that ends with `seeds.common.finish_plan` (or calls the checker itself), a
+pydantic options model, and one `PlannerInfo` entry in `PLANNERS`.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
+
+from usvstation.planning.errors import NoFeasiblePlan
+from usvstation.planning.seeds.common import (
+    World,
+    cruise_speed,
+    finish_plan,
+    recovery_gates,
+)
+from usvstation.planning.validate import plan_violations
+from usvstation.scenario import Scenario
+
+MOVING = "moving-obstacles"
+MOVING_TIMED = "moving-obstacles-timed-at-cruise"
+SWEPT = "moving-obstacles-as-swept-corridors"
+RAMP = "ramp-alignment"
+RUN_IN = "run-in-along-ramp-axis"
+COLREGS = "colregs"
+REPLAN = "re-planning"
+SPEED = "speed-profile"
+SEEDED = "seeded-deterministic"
+
+
+@dataclass(frozen=True)
+class PlannerInfo:
+    name: str
+    paper: str
+    title: str
+    capabilities: tuple[str, ...]
+    options: type[BaseModel]
+    run: Callable[[Scenario, int, Any], dict[str, Any]]
+
+    def describe(self) -> dict[str, Any]:
+        """The `GET /api/planners` entry: {name, paper, title, capabilities}."""
+        return {"name": self.name, "paper": self.paper, "title": self.title,
+                "capabilities": list(self.capabilities)}
+
+
+class SeedOptions(BaseModel):
+    """Options every seed planner takes."""
+
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
+    cruise_speed: float | None = Field(None, gt=0.0, description="m/s; default the start speed")
+    attempts: int = Field(4, ge=1, le=50, description="seeds/gates tried before giving up")
+    corner_cut_m: float = Field(6.0, gt=0.0, le=100.0)
+
+
+class RRTStarOptions(SeedOptions):
+    step_m: float | None = Field(None, gt=0.0,
+                                 description="steer step p; default dist/12 in [2, 20]")
+    iterations: int = Field(1500, ge=50, le=200_000)
+    goal_bias: float = Field(0.05, ge=0.0, le=1.0)
+
+
+def _drive(scenario: Scenario, seed: int, opts: SeedOptions, name: str,
+           core: Callable[[Scenario, World, np.ndarray, float, np.random.Generator], tuple],
+           speeds_from: dict[str, Any] | None = None) -> dict[str, Any]:
+    """Common attempt loop: gate (recovery), seed, clearance; first plan passing the checker."""
+    t0 = time.perf_counter()
+    cruise = cruise_speed(scenario, opts.cruise_speed)
+    v = scenario.vessel
+    margins = (v.length + v.compensation_radius, v.length)
+    last: str = "no path found"
+    full = World.from_scenario(scenario, margins[0])
+    gates = recovery_gates(scenario, full) if scenario.kind == "recovery" else [None]
+    for attempt in range(opts.attempts):
+        margin = margins[0] if attempt < max(1, opts.attempts // 2) or opts.attempts == 1 \
+            else margins[1]
+        world = World.from_scenario(scenario, margin)
+        gate = gates[attempt % len(gates)]
+        target = np.array([scenario.goal.x, scenario.goal.y]) if gate is None else gate
+        rng = np.random.default_rng([seed, attempt])
+        route, extra = core(scenario, world, target, cruise, rng)
+        if route is None:
+            last = extra.get("reason", last) if isinstance(extra, dict) else last
+            continue
+        speeds = None
+        if speeds_from is not None and "speeds" in speeds_from:
+            speeds = np.asarray(speeds_from["speeds"], float)
+        if gate is not None:
+            route = np.vstack([route, [[0.0, 0.0]]])
+            if speeds is not None:
+                speeds = np.append(speeds, speeds[-1])
+        try:
+            plan = finish_plan(scenario, route, name, seed, cruise, time.perf_counter() - t0,
+                               {**(extra or {}), "attempts": attempt + 1,
+                                "inflation_m": round(margin, 6)}, cut=opts.corner_cut_m,
+                               speeds=speeds)
+        except NoFeasiblePlan as exc:
+            last = str(exc).removeprefix("no feasible plan: ").removeprefix(f"{name}: ")
+            continue
+        plan["metrics"]["elapsed_s"] = round(time.perf_counter() - t0, 6)
+        if margin < margins[0]:
+            plan["warnings"].append(
+                f"reduced clearance: planned with {margin:g} m instead of eq. 7's {margins[0]:g} m")
+        return plan
+    raise NoFeasiblePlan(f"no feasible plan: {name}: {last}")
+
+
+def _bounds(scenario: Scenario, target: np.ndarray, pad: float | None = None
+            ) -> tuple[float, float, float, float]:
+    pts = np.array([[scenario.start.x, scenario.start.y], target,
+                    [scenario.goal.x, scenario.goal.y]])
+    dist = float(np.hypot(*(pts[0] - pts[1])))
+    pad = max(20.0, 0.35 * dist) if pad is None else pad
+    lo, hi = pts.min(axis=0) - pad, pts.max(axis=0) + pad
+    return float(lo[0]), float(hi[0]), float(lo[1]), float(hi[1])
+
+
+def _rrt_family(kind: str) -> Callable[[Scenario, int, RRTStarOptions], dict[str, Any]]:
+    from usvstation.planning.seeds.rrt import RRTOptions, bspline_path, rrt_star, vpf_path
+
+    def core(sc: Scenario, world: World, target: np.ndarray, cruise: float,
+             rng: np.random.Generator, o: RRTStarOptions) -> tuple:
+        start = np.array([sc.start.x, sc.start.y])
+        dist = float(np.hypot(*(target - start)))
+        step = o.step_m or float(np.clip(dist / 12.0, 2.0, 20.0))
+        ro = RRTOptions(step=step, iterations=o.iterations, goal_bias=o.goal_bias,
+                        vpf=kind == "vpf")
+        path = rrt_star(start, target, world, cruise, _bounds(sc, target), ro, rng)
+        if path is None:
+            return None, {"reason": f"no tree branch reached the goal in {o.iterations} iterations"}
+        raw_len = float(np.hypot(*np.diff(path, axis=0).T).sum())
+        if kind == "vpf":
+            path = vpf_path(path, world, cruise, ro)
+        elif kind == "bspline":
+            path = bspline_path(path, step / 3.0)
+        return path, {"tree_path_length_m": round(raw_len, 6), "step_m": round(step, 6),
+                      "iterations": o.iterations}
+
+    def run(sc: Scenario, seed: int, o: RRTStarOptions) -> dict[str, Any]:
+        name = {"rrt": "rrt-star", "bspline": "bspline-rrt-star", "vpf": "vpf-rrt-star"}[kind]
+        return _drive(sc, seed, o, name, lambda *a: core(*a, o))
+
+    return run
+
+
+def _run_iga(scenario: Scenario, seed: int, options: Any) -> dict[str, Any]:
+    from usvstation.planning.plan import plan_scenario
+
+    plan = plan_scenario(scenario, planner="iga", seed=seed, **options)
+    bad = plan_violations(plan, scenario)
+    if bad:
+        raise NoFeasiblePlan(f"no feasible plan: iga: {bad[0]}")
+    return plan
+
+
+class _IGAPassThrough(BaseModel):
+    """IGA options are validated by `IGAOptions` (planning/options.py)."""
+
+    model_config = ConfigDict(extra="allow")
+
+
+PLANNERS: dict[str, PlannerInfo] = {}
+
+
+def _register(info: PlannerInfo) -> None:
+    PLANNERS[info.name] = info
+
+
+_register(PlannerInfo(
+    "iga", "000", "Improved genetic algorithm in x-y-t (IGA)",
+    (MOVING, RAMP, SPEED, SEEDED), _IGAPassThrough, _run_iga))
+_register(PlannerInfo(
+    "rrt-star", "004", "RRT* (Alg. 1 without the VPF step)",
+    (MOVING_TIMED, RUN_IN, SEEDED), RRTStarOptions, _rrt_family("rrt")))
+_register(PlannerInfo(
+    "bspline-rrt-star", "004", "RRT* smoothed by an interpolating cubic B-spline",
+    (MOVING_TIMED, RUN_IN, SEEDED), RRTStarOptions, _rrt_family("bspline")))
+_register(PlannerInfo(
+    "vpf-rrt-star", "004", "RRT* with the virtual potential field node adjustment (eq. 7-12)",
+    (MOVING_TIMED, RUN_IN, SEEDED), RRTStarOptions, _rrt_family("vpf")))
+
+
+def planner_names() -> list[str]:
+    return list(PLANNERS)
+
+
+def describe_planners() -> list[dict[str, Any]]:
+    """JSON list of {name, paper, title, capabilities: [str]} in registry order."""
+    return [p.describe() for p in PLANNERS.values()]
+
+
+class PlannerOptionError(ValueError):
+    """Bad planner option; the message is one line naming the field."""
+
+
+def plan_with(scenario: Scenario, name: str = "iga", seed: int | None = None,
+         **options: Any) -> dict[str, Any]:
+    """Plan with the named planner; the plan has passed the independent checker."""
+    info = PLANNERS.get(name)
+    if info is None:
+        raise PlannerOptionError(
+            f"planner: unknown planner {name!r}; available: {', '.join(PLANNERS)}")
+    if name == "iga":
+        return info.run(scenario, seed, options)  # type: ignore[arg-type]
+    base = dict(scenario.planner.model_dump(exclude_unset=True)) if scenario.planner else {}
+    seed = seed if seed is not None else int(base.get("seed", 1))
+    try:
+        opts = info.options(**options)
+    except ValidationError as exc:
+        err = exc.errors(include_url=False)[0]
+        loc = ".".join(str(p) for p in err["loc"])
+        raise PlannerOptionError(f"planner.{loc}: {err['msg']}") from None
+    return info.run(scenario, seed, opts)
+
+
+class ColregsGAOptions(SeedOptions):
+    population: int = Field(50, ge=4, le=2000)
+    generations: int = Field(40, ge=1, le=1000)
+    stall_generations: int = Field(6, ge=1, le=1000)
+    yaw_rate_max_deg: float = Field(15.0, gt=0.0, le=90.0, description="paper: 5 deg/s")
+    d_ca_m: float = Field(10.0, gt=0.0, description="range where obstacle terms saturate")
+    risk_scale_m: float = Field(20.0, gt=0.0, description="L_d of l1 = 1.5 rho L_d")
+    improved: bool = True
+    mode: str = Field("station", pattern="^(station|paper)$")
+
+
+def _run_colregs_ga(sc: Scenario, seed: int, o: ColregsGAOptions) -> dict[str, Any]:
+    import math
+
+    from usvstation.planning.seeds.colregs_ga import GAStepOptions, plan_colregs_ga
+
+    paper = o.mode == "paper"
+    go = GAStepOptions(
+        population=o.population, generations=300 if paper else o.generations,
+        stall=20 if paper else o.stall_generations,
+        yaw_rate_max_deg=5.0 if paper else o.yaw_rate_max_deg,
+        d_ca=o.d_ca_m, risk_scale_m=o.risk_scale_m, improved=o.improved, paper_fitness=paper)
+    holder: dict[str, Any] = {}
+
+    def core(s: Scenario, world: World, target: np.ndarray, cruise: float,
+             rng: np.random.Generator) -> tuple:
+        v = s.vessel
+        route, speeds, stats = plan_colregs_ga(
+            np.array([s.start.x, s.start.y]), math.radians(s.start.heading_deg),
+            min(max(s.start.speed, v.speed_min), v.speed_max), target, world,
+            v.speed_min, min(v.speed_max, cruise * 1.5), v.accel_max, rng, go)
+        holder["speeds"] = speeds
+        stats["mode"] = o.mode
+        return route, stats
+
+    return _drive(sc, seed, o, "colregs-ga", core, speeds_from=holder)
+
+
+_register(PlannerInfo(
+    "colregs-ga", "001", "Per-step GA over acceleration and yaw rate with COLREGs and fuzzy risk",
+    (MOVING, COLREGS, RUN_IN, SPEED, SEEDED), ColregsGAOptions, _run_colregs_ga))
+
+
+class ReplanGAOptions(SeedOptions):
+    population: int = Field(20, ge=4, le=2000)
+    generations_global: int = Field(30, ge=1, le=2000)
+    generations_local: int = Field(20, ge=1, le=2000)
+    unsafe_range_m: float = Field(100.0, gt=0.0)
+
+
+def _run_replan_ga(sc: Scenario, seed: int, o: ReplanGAOptions) -> dict[str, Any]:
+    from usvstation.planning.seeds.replan_ga import ReplanOptions, plan_replan
+
+    ro = ReplanOptions(population=o.population, generations_global=o.generations_global,
+                       generations_local=o.generations_local, unsafe_range_m=o.unsafe_range_m)
+
+    def core(s: Scenario, world: World, target: np.ndarray, cruise: float,
+             rng: np.random.Generator) -> tuple:
+        start = np.array([s.start.x, s.start.y])
+        return plan_replan(start, target, world, cruise, _bounds(s, target, pad=None), rng, ro)
+
+    return _drive(sc, seed, o, "replan-ga", core)
+
+
+class DEAPFOptionsModel(SeedOptions):
+    step_m: float | None = Field(None, gt=0.0,
+                                 description="APF step s; default dist/40 in [0.5, 5]")
+    turn_radius_m: float = Field(3.0, gt=0.0, description="D of eq. 2.5")
+    popsize: int = Field(8, ge=2, le=200)
+    maxiter: int = Field(15, ge=1, le=1000)
+    kappa: str = Field("paper", pattern="^(paper|chord)$")
+
+
+def _run_de_apf(sc: Scenario, seed: int, o: DEAPFOptionsModel) -> dict[str, Any]:
+    from usvstation.planning.seeds.de_apf import DEAPFOptions, plan_de_apf
+
+    def core(s: Scenario, world: World, target: np.ndarray, cruise: float,
+             rng: np.random.Generator) -> tuple:
+        start = np.array([s.start.x, s.start.y])
+        dist = float(np.hypot(*(target - start)))
+        step = o.step_m or float(np.clip(dist / 40.0, 0.5, 5.0))
+        do = DEAPFOptions(step=step, turn_radius=o.turn_radius_m, popsize=o.popsize,
+                          maxiter=o.maxiter, paper_kappa=o.kappa == "paper")
+        return plan_de_apf(start, target, world, cruise, int(rng.integers(2**31)), do)
+
+    return _drive(sc, seed, o, "de-apf", core)
+
+
+_register(PlannerInfo(
+    "replan-ga", "002", "GA global path on a grid with local GA re-planning on collision course",
+    (MOVING, REPLAN, RUN_IN, SEEDED), ReplanGAOptions, _run_replan_ga))
+_register(PlannerInfo(
+    "de-apf", "003", "Potential field with parameters evolved by differential evolution",
+    (MOVING_TIMED, RUN_IN, SEEDED), DEAPFOptionsModel, _run_de_apf))
+_ORDER = ("iga", "colregs-ga", "replan-ga", "de-apf", "rrt-star", "bspline-rrt-star",
+          "vpf-rrt-star")
+PLANNERS = {k: PLANNERS[k] for k in _ORDER}

@@ -1,0 +1,313 @@
+"""Shared geometry for the seed planners: timed collision checks, speed profile, turn limit.
+
+Every seed planner produces a polyline in the scenario frame; `finish_plan`
+turns it into the stable plan format (DESIGN.md "Plan output") with the
+same speed profile, the same turn-limit pass and the same recovery run-in
+along the ramp axis, then asks the independent checker
+(`planning.validate.plan_violations`) before anything leaves.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from usvstation.planning.errors import NoFeasiblePlan
+from usvstation.planning.validate import plan_violations
+from usvstation.planning.xyt import segments_hit_circles
+from usvstation.scenario import Scenario
+
+
+@dataclass(frozen=True)
+class World:
+    """Obstacle circles of a scenario (frame of the scenario) with a planning inflation."""
+
+    cx: np.ndarray
+    cy: np.ndarray
+    vx: np.ndarray
+    vy: np.ndarray
+    radius: np.ndarray
+    inflated: np.ndarray
+
+    @classmethod
+    def from_scenario(cls, scenario: Scenario, margin: float | None = None) -> World:
+        """Circles inflated by `margin` (default paper 000 eq. 7: D_USV + R_c)."""
+        v = scenario.vessel
+        m = v.length + v.compensation_radius if margin is None else margin
+        obs = scenario.obstacles
+        arr = np.array([[o.x, o.y, o.vx, o.vy, o.radius] for o in obs], float).reshape(-1, 5)
+        return cls(arr[:, 0], arr[:, 1], arr[:, 2], arr[:, 3], arr[:, 4], arr[:, 4] + m)
+
+    @property
+    def count(self) -> int:
+        return int(self.cx.size)
+
+    @property
+    def moving(self) -> np.ndarray:
+        return (self.vx != 0.0) | (self.vy != 0.0)
+
+    def swept(self, horizon_s: float) -> World:
+        """Static circles covering each obstacle's track over [0, horizon] (swept corridor).
+
+        Used by planners whose paper knows only static obstacles: a moving
+        circle becomes a chain of static circles spaced at most its radius apart.
+        """
+        cx, cy, r, ri = [], [], [], []
+        for i in range(self.count):
+            travel = math.hypot(self.vx[i], self.vy[i]) * horizon_s
+            n = 1 + math.ceil(travel / max(self.radius[i], 0.5))
+            s = np.linspace(0.0, horizon_s, n)
+            cx.append(self.cx[i] + self.vx[i] * s)
+            cy.append(self.cy[i] + self.vy[i] * s)
+            r.append(np.full(n, self.radius[i]))
+            ri.append(np.full(n, self.inflated[i]))
+        if not cx:
+            return self
+        cxa, cya = np.concatenate(cx), np.concatenate(cy)
+        z = np.zeros_like(cxa)
+        return World(cxa, cya, z, z.copy(), np.concatenate(r), np.concatenate(ri))
+
+    def segments_hit(self, p0: np.ndarray, t0: np.ndarray, p1: np.ndarray, t1: np.ndarray,
+                     radius: np.ndarray | None = None) -> np.ndarray:
+        """(N,) True where segment i (timed, paper 000 eq. 9) enters any inflated circle."""
+        if self.count == 0:
+            return np.zeros(len(p0), dtype=bool)
+        r = self.inflated if radius is None else radius
+        p0, p1 = np.asarray(p0, float).reshape(-1, 2), np.asarray(p1, float).reshape(-1, 2)
+        t0 = np.broadcast_to(np.asarray(t0, float), (len(p0),))
+        t1 = np.broadcast_to(np.asarray(t1, float), (len(p1),))
+        hit = segments_hit_circles(
+            p0[:, 0, None], p0[:, 1, None], t0[:, None], p1[:, 0, None], p1[:, 1, None],
+            t1[:, None], self.cx, self.cy, self.vx, self.vy, r,
+        )
+        return hit.any(axis=1)
+
+    def points_free(self, p: np.ndarray, t: np.ndarray | float) -> np.ndarray:
+        """(N,) True where point i at time t_i lies outside every inflated circle."""
+        p = np.asarray(p, float).reshape(-1, 2)
+        if self.count == 0:
+            return np.ones(len(p), dtype=bool)
+        t = np.broadcast_to(np.asarray(t, float), (len(p),))
+        dx = p[:, 0, None] - (self.cx + self.vx * t[:, None])
+        dy = p[:, 1, None] - (self.cy + self.vy * t[:, None])
+        return ((dx * dx + dy * dy) >= self.inflated**2).all(axis=1)
+
+    def distance(self, p: np.ndarray, t: np.ndarray | float) -> np.ndarray:
+        """(N, M) distance from point i at time t_i to obstacle j's inflated edge."""
+        p = np.asarray(p, float).reshape(-1, 2)
+        t = np.broadcast_to(np.asarray(t, float), (len(p),))
+        dx = p[:, 0, None] - (self.cx + self.vx * t[:, None])
+        dy = p[:, 1, None] - (self.cy + self.vy * t[:, None])
+        return np.hypot(dx, dy) - self.inflated
+
+
+def cruise_speed(scenario: Scenario, requested: float | None = None) -> float:
+    """Planning speed: the requested one, else the start speed, inside the vessel's limits."""
+    v = scenario.vessel
+    want = requested if requested is not None else (scenario.start.speed or 1.0)
+    return float(min(max(want, v.speed_min), v.speed_max))
+
+
+def speed_profile(pts: np.ndarray, scenario: Scenario, cruise: float,
+                  wanted: np.ndarray | None = None) -> tuple[np.ndarray, ...]:
+    """Times and speeds of a polyline: from the start speed towards `cruise` at accel_max.
+
+    v_{i+1} = min(cruise, sqrt(v_i^2 + 2 a s_i)) (or the mirror when slowing
+    down), so |v_{i+1} - v_i| / dt_i = |v_{i+1}^2 - v_i^2| / (2 s_i) <= a with
+    dt_i = 2 s_i / (v_i + v_{i+1}), position linear in time on each segment.
+    `wanted` (one speed per point) replaces the constant cruise target.
+    """
+    v = scenario.vessel
+    seg = np.hypot(*np.diff(pts, axis=0).T)
+    speeds = np.empty(len(pts))
+    speeds[0] = min(max(scenario.start.speed, v.speed_min), v.speed_max)
+    a = v.accel_max * (1.0 - 1e-4)  # margin for the 6-decimal rounding of the plan
+    for i, s in enumerate(seg):
+        vi = speeds[i]
+        goal = cruise if wanted is None else float(np.clip(wanted[i + 1], v.speed_min, v.speed_max))
+        if vi < goal:
+            speeds[i + 1] = min(goal, math.sqrt(vi * vi + 2.0 * a * s))
+        else:
+            speeds[i + 1] = max(goal, math.sqrt(max(vi * vi - 2.0 * a * s, 0.0)))
+    dt = 2.0 * seg / (speeds[:-1] + speeds[1:])
+    return np.concatenate([[0.0], np.cumsum(dt)]), speeds
+
+
+def dedupe(pts: np.ndarray, tol: float = 1e-3) -> np.ndarray:
+    """Drop points closer than `tol` to their predecessor (the last point is kept)."""
+    pts = np.asarray(pts, float)
+    keep = [0]
+    for i in range(1, len(pts)):
+        if np.hypot(*(pts[i] - pts[keep[-1]])) > tol:
+            keep.append(i)
+        elif i == len(pts) - 1:
+            keep[-1] = i if len(keep) > 1 else keep[-1]
+    out = pts[keep]
+    out[-1] = pts[-1]
+    return out
+
+
+def turns_deg(pts: np.ndarray) -> np.ndarray:
+    """Turn at every interior vertex, degrees (wrap180 of successive segment headings)."""
+    h = np.arctan2(*np.diff(pts, axis=0).T[::-1])
+    if h.size < 2:
+        return np.zeros(0)
+    return np.degrees(np.abs(np.mod(np.diff(h) + np.pi, 2 * np.pi) - np.pi))
+
+
+def limit_turns(pts: np.ndarray, turn_max_deg: float, cut: float) -> np.ndarray:
+    """Cut every corner sharper than the turn limit until none is left.
+
+    A corner V between A and B becomes two points at distance c (at most
+    `cut`, at most 45 % of either leg) before and after V on its legs: each
+    new corner turns half as much. Endpoints never move.
+    """
+    pts = dedupe(pts)
+    for _ in range(len(pts)):  # a reversal (turn ~180 deg) cannot be cut: drop the spike
+        tr = turns_deg(pts)
+        spikes = np.flatnonzero(tr > 179.0) + 1
+        if spikes.size == 0:
+            break
+        pts = dedupe(np.delete(pts, spikes[:1], axis=0))
+    for _ in range(12):
+        tr = turns_deg(pts)
+        bad = np.flatnonzero(tr > turn_max_deg - 0.5) + 1
+        if bad.size == 0:
+            return pts
+        out = [pts[0]]
+        for i in range(1, len(pts) - 1):
+            if i in set(bad.tolist()):
+                a, v, b = pts[i - 1], pts[i], pts[i + 1]
+                la, lb = np.hypot(*(a - v)), np.hypot(*(b - v))
+                c = min(cut, 0.45 * la, 0.45 * lb)
+                out.append(v + (a - v) * (c / la))
+                out.append(v + (b - v) * (c / lb))
+            else:
+                out.append(pts[i])
+        out.append(pts[-1])
+        pts = dedupe(np.array(out))
+    return pts
+
+
+def timed_hits(pts: np.ndarray, world: World, scenario: Scenario, cruise: float) -> np.ndarray:
+    """Segments of a polyline (timed by `speed_profile`) that enter an inflated circle."""
+    t, _ = speed_profile(pts, scenario, cruise)
+    return world.segments_hit(pts[:-1], t[:-1], pts[1:], t[1:])
+
+
+def recovery_gates(scenario: Scenario, world: World) -> list[np.ndarray]:
+    """Candidate run-in gates (g, 0) on the ramp axis; from each the boat runs straight in.
+
+    A gate is kept when it and the straight run-in to the ramp end are clear
+    of static obstacles; nearest-first distances 15, 10, 20, 6, 30 m (within
+    the start's distance out).
+    """
+    out = []
+    for g in (15.0, 10.0, 20.0, 6.0, 30.0, 4.0):
+        if g >= scenario.start.x - 1.0:
+            continue
+        p = np.array([[g, 0.0], [0.0, 0.0]])
+        static = World(world.cx[~world.moving], world.cy[~world.moving],
+                       world.vx[~world.moving], world.vy[~world.moving],
+                       world.radius[~world.moving], world.inflated[~world.moving])
+        if not static.segments_hit(p[:1], 0.0, p[1:], 1.0)[0]:
+            out.append(p[0])
+    return out or [np.array([min(10.0, scenario.start.x / 2.0), 0.0])]
+
+
+def path_metrics(pts: np.ndarray) -> dict[str, float]:
+    """Length, normalisation index (004 Tab. 5/6), total and maximum turn."""
+    seg = np.hypot(*np.diff(pts, axis=0).T)
+    length = float(seg.sum())
+    straight = float(np.hypot(*(pts[-1] - pts[0])))
+    tr = turns_deg(pts)
+    return {
+        "length_m": length,
+        "normalization_index": length / straight if straight > 0 else 1.0,
+        "total_turn_deg": float(tr.sum()),
+        "max_turn_deg": float(tr.max()) if tr.size else 0.0,
+    }
+
+
+def finish_plan(
+    scenario: Scenario, route: np.ndarray, planner: str, seed: int, cruise: float,
+    elapsed_s: float, extra: dict[str, Any] | None = None, cut: float = 6.0,
+    speeds: np.ndarray | None = None,
+) -> dict[str, Any]:
+    """Stable plan dict from a route start -> ... -> goal, checked by the validator.
+
+    For a recovery the route must already end with the run-in along the ramp
+    axis (gate, then (0, 0)). Raises NoFeasiblePlan with the checker's first
+    complaint when the plan breaks a rule.
+    """
+    route = np.asarray(route, float)
+    route[0] = (scenario.start.x, scenario.start.y)
+    route[-1] = (scenario.goal.x, scenario.goal.y)
+    world = World.from_scenario(scenario, margin=scenario.vessel.length / 2.0)
+    if speeds is not None:  # a planner with its own speeds: speed of the nearest route point
+        pts = limit_turns(route, scenario.vessel.turn_max_deg, min(cut, 1.0))
+        keep = [int(np.argmin(np.hypot(*(route - q).T))) for q in pts]
+        wanted = np.asarray(speeds, float)[keep]
+        t, v = speed_profile(pts, scenario, cruise, wanted)
+        return _assemble(scenario, pts, t, v, planner, seed, elapsed_s, extra)
+    pts = limit_turns(route, scenario.vessel.turn_max_deg, cut)
+    for c in (cut / 2, cut / 4, cut / 8):
+        if not timed_hits(pts, world, scenario, cruise).any():
+            break
+        pts = limit_turns(route, scenario.vessel.turn_max_deg, c)
+    t, v = speed_profile(pts, scenario, cruise)
+    return _assemble(scenario, pts, t, v, planner, seed, elapsed_s, extra)
+
+
+def _assemble(scenario: Scenario, pts: np.ndarray, t: np.ndarray, v: np.ndarray, planner: str,
+              seed: int, elapsed_s: float, extra: dict[str, Any] | None) -> dict[str, Any]:
+    h = np.degrees(np.arctan2(*np.diff(pts, axis=0).T[::-1]))
+    h = np.append(h, h[-1]) % 360.0
+    waypoints = [
+        {"x": _r(p[0]), "y": _r(p[1]), "t": _r(tt), "speed": _r(vv), "heading_deg": _r(hh)}
+        for p, tt, vv, hh in zip(pts, t, v, h, strict=True)
+    ]
+    waypoints[0]["x"], waypoints[0]["y"] = scenario.start.x, scenario.start.y
+    waypoints[-1]["x"], waypoints[-1]["y"] = scenario.goal.x, scenario.goal.y
+    pm = path_metrics(pts)
+    clear = World.from_scenario(scenario, margin=0.0)
+    metrics: dict[str, Any] = {
+        "fitness": None,
+        **{k: _r(val) for k, val in pm.items()},
+        "duration_s": _r(float(t[-1])),
+        "min_clearance_m": _r(min_clearance(pts, t, clear, scenario.vessel.length / 2.0)),
+        "collision_free": True,
+        "generations": 0,
+        "elapsed_s": round(elapsed_s, 6),
+        "arrival_heading_deg": _r(float(h[-1])),
+    }
+    metrics.update(extra or {})
+    plan = {"planner": planner, "scenario": scenario.name, "seed": seed,
+            "waypoints": waypoints, "metrics": metrics, "warnings": []}
+    bad = plan_violations(plan, scenario)
+    if bad:
+        raise NoFeasiblePlan(f"no feasible plan: {planner}: {bad[0]}")
+    return plan
+
+
+def min_clearance(pts: np.ndarray, t: np.ndarray, world: World, half_hull: float) -> float | None:
+    """Least water between the hull and an obstacle edge over the timed polyline, m."""
+    if world.count == 0:
+        return None
+    dt = np.diff(t)[:, None]
+    ex = pts[:-1, 0, None] - (world.cx + world.vx * t[:-1, None])
+    ey = pts[:-1, 1, None] - (world.cy + world.vy * t[:-1, None])
+    dx = np.diff(pts[:, 0])[:, None] - world.vx * dt
+    dy = np.diff(pts[:, 1])[:, None] - world.vy * dt
+    dd = dx * dx + dy * dy
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s = np.clip(np.where(dd > 0, -(ex * dx + ey * dy) / dd, 0.0), 0.0, 1.0)
+    d = np.hypot(ex + s * dx, ey + s * dy) - world.radius - half_hull
+    return float(d.min())
+
+
+def _r(value: float) -> float:
+    return round(float(value), 6)
