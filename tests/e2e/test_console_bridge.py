@@ -42,15 +42,20 @@ TELEMETRY_INSTRUMENTS = ["x", "y", "sog", "cog", "heading", "xte", "battery", "f
 def boat_and_station(tmp_path):
     log_path = tmp_path / "sim.log"
     log = log_path.open("w")
-    sim = subprocess.Popen([str(SCRIPT), "sim", "--link", "pty", "--telemetry-hz", "5"],
-                           stdout=log, stderr=subprocess.STDOUT)
+    key = tmp_path / "link.key"
+    subprocess.run([str(SCRIPT), "link-key", "new", str(key)], check=True,
+                   capture_output=True)
+    sim = subprocess.Popen([str(SCRIPT), "sim", "--link", "pty", "--telemetry-hz", "5",
+                            "--link-key", str(key)], stdout=log, stderr=subprocess.STDOUT)
     station = None
     try:
         deadline = time.monotonic() + 30
         while not (found := re.search(r"boat on (\S+) ", log_path.read_text())):
             assert time.monotonic() < deadline, log_path.read_text()
             time.sleep(0.05)
-        station = StationProcess(tmp_path / "data", "--link", found.group(1))
+        station = StationProcess(tmp_path / "data", "--link", found.group(1), "--link-key",
+                                 str(key))
+        station.wait_link_up()
         yield sim, station
     finally:
         if station is not None:
@@ -312,7 +317,8 @@ def test_replay_of_a_stored_run_at_20x(browser, chart_station, artifacts):
     plan = st.wait_plan(c.post("/api/plans", json={"seed": 1}).json()["id"])
     mission = c.post("/api/missions", json={"plan_id": plan["id"]}).json()
     st.wait(f"/api/missions/{mission['id']}", "state", ("uploading",), 20)
-    assert c.post("/api/boat/command", json={"command": "start"}).status_code == 200
+    assert c.post("/api/boat/command", json={"command": "start",
+                                                 "mission_id": mission["id"]}).status_code == 200
     duration = plan["plan"]["metrics"]["duration_s"]
     done = st.wait(f"/api/missions/{mission['id']}", "state", ("active", "verified"),
                    duration / 5 * 3 + 30)

@@ -54,7 +54,8 @@ def start_mission(station) -> dict:
     plan = station.wait_plan(c.post("/api/plans", json={"seed": 1}).json()["id"])
     mission = c.post("/api/missions", json={"plan_id": plan["id"]}).json()
     station.wait(f"/api/missions/{mission['id']}", "state", ("uploading",), 20)
-    assert c.post("/api/boat/command", json={"command": "start"}).status_code == 200
+    assert c.post("/api/boat/command", json={"command": "start",
+                                                 "mission_id": mission["id"]}).status_code == 200
     return plan
 
 

@@ -98,7 +98,8 @@ def test_time_slider_covers_a_run_slower_than_its_plan(page, station):
     duration = plan["plan"]["metrics"]["duration_s"]
     mission = c.post("/api/missions", json={"plan_id": plan["id"]}).json()
     station.wait(f"/api/missions/{mission['id']}", "state", ("uploading",), 20)
-    assert c.post("/api/boat/command", json={"command": "start"}).status_code == 200
+    assert c.post("/api/boat/command", json={"command": "start",
+                                                 "mission_id": mission["id"]}).status_code == 200
     assert c.post("/api/boat/command", json={"command": "hold"}).status_code == 200
     time.sleep(0.5 * duration / 5)  # half the plan's duration in boat time (--sim-speed 5)
     assert c.post("/api/boat/command", json={"command": "resume"}).status_code == 200
@@ -148,7 +149,8 @@ def test_a_run_ends_when_the_boat_reports_done_between_telemetry_frames(browser,
         mission = c.post("/api/missions", json={"plan_id": plan["id"]}).json()
         uploaded = st.wait(f"/api/missions/{mission['id']}", "state", ("uploading",), 20)
         assert uploaded["state"] == "verified", uploaded
-        started = c.post("/api/boat/command", json={"command": "start"})
+        started = c.post("/api/boat/command", json={"command": "start",
+                                                 "mission_id": mission["id"]})
         assert started.status_code == 200, started.text
         done = st.wait(f"/api/missions/{mission['id']}", "state", ("active",), 15)
         assert done["state"] == "completed"
