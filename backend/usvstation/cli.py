@@ -388,11 +388,7 @@ def _cmd_bench(args: argparse.Namespace) -> int:
     from usvstation.bench.planner import render_markdown, run_planner_bench
 
     if args.markdown:
-        try:
-            print(render_markdown(json.loads(args.markdown.read_text(encoding="utf-8"))), end="")
-        except (OSError, ValueError, KeyError) as exc:
-            raise CliError(f"cannot render {args.markdown}: {exc}", EXIT_INVALID) from None
-        return EXIT_OK
+        return _print_markdown(render_markdown, args.markdown)
     try:
         result = run_planner_bench(
             folder=args.scenarios, seeds=args.seeds, random_count=args.random, quick=args.quick,
@@ -404,15 +400,20 @@ def _cmd_bench(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def _print_markdown(render: Any, saved: Path) -> int:
+    """Print a benchmark's RESULTS.md tables from its saved --json output."""
+    try:
+        print(render(json.loads(saved.read_text(encoding="utf-8"))), end="")
+    except (OSError, ValueError, KeyError) as exc:
+        raise CliError(f"cannot render {saved}: {exc}", EXIT_INVALID) from None
+    return EXIT_OK
+
+
 def _cmd_bench_compare(args: argparse.Namespace) -> int:
     from usvstation.bench.compare import render_markdown, run_compare
 
     if args.markdown:
-        try:
-            print(render_markdown(json.loads(args.markdown.read_text(encoding="utf-8"))), end="")
-        except (OSError, ValueError, KeyError) as exc:
-            raise CliError(f"cannot render {args.markdown}: {exc}", EXIT_INVALID) from None
-        return EXIT_OK
+        return _print_markdown(render_markdown, args.markdown)
     try:
         result = run_compare(
             planners=args.planners.split(",") if args.planners else None,
