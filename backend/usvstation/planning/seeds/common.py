@@ -121,13 +121,19 @@ def speed_profile(pts: np.ndarray, scenario: Scenario, cruise: float,
     `wanted` (one speed per point) replaces the constant cruise target.
     """
     v = scenario.vessel
+    # ground speeds that keep the speed through the water within [speed_min, speed_max]
+    # whatever the leg's direction (issue 12): |v u - c| lies within v -+ |c|
+    c = scenario.environment.current_speed
+    lo = v.speed_min + c
+    hi = max(lo, v.speed_max - c)
     seg = np.hypot(*np.diff(pts, axis=0).T)
     speeds = np.empty(len(pts))
-    speeds[0] = min(max(scenario.start.speed, v.speed_min), v.speed_max)
+    speeds[0] = min(max(scenario.start.speed, lo), hi)
+    cruise = min(max(cruise, lo), hi)
     a = v.accel_max * (1.0 - 1e-4)  # margin for the 6-decimal rounding of the plan
     for i, s in enumerate(seg):
         vi = speeds[i]
-        goal = cruise if wanted is None else float(np.clip(wanted[i + 1], v.speed_min, v.speed_max))
+        goal = cruise if wanted is None else float(np.clip(wanted[i + 1], lo, hi))
         if vi < goal:
             speeds[i + 1] = min(goal, math.sqrt(vi * vi + 2.0 * a * s))
         else:
