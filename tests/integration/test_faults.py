@@ -9,6 +9,7 @@ from __future__ import annotations
 import contextlib
 import json
 import os
+import random
 import signal
 import socket
 import sqlite3
@@ -23,9 +24,21 @@ from websockets.sync.client import connect
 from usvstation.scenario import load_scenario
 from usvstation.serveproc import SCRIPT
 
-LONG_PLAN = {**load_scenario("case1").model_dump(mode="json"),
-             "planner": {"population": 1000, "generations_max": 5000,
-                         "stall_generations": 5000, "time_budget_s": 600.0}}
+
+def _long_plan() -> dict:
+    """case1 at the largest population and generation count, with 150 small islands beside
+    the corridor that pruning keeps: over a minute of CPU (70 s on a quiet machine)."""
+    base = load_scenario("case1").model_dump(mode="json")
+    rng = random.Random(3)
+    islands = [{"x": rng.uniform(15, 80), "y": rng.uniform(-60, -25) if i % 2
+                else rng.uniform(30, 60), "radius": 0.5, "vx": 0.0, "vy": 0.0}
+               for i in range(150)]
+    return {**base, "obstacles": base["obstacles"] + islands,
+            "planner": {"population": 1000, "generations_max": 5000,
+                        "stall_generations": 5000, "time_budget_s": 600.0}}
+
+
+LONG_PLAN = _long_plan()
 
 
 def wait_for(predicate, timeout: float, what: str):

@@ -57,8 +57,9 @@ def test_world_scenario_takes_the_targets_and_the_apparent_current() -> None:
     base = load_scenario("case1")
     far = TargetState("ais:1", 40.0, 30.0, 0.5, -1.0, 4.0)
     at_ramp = TargetState("ais:2", 2.0, 0.0, 0.0, 0.0, 2.0)
-    sc, dropped = world_scenario(base, [far, at_ramp], frame_velocity=(0.0, 1.0))
-    assert dropped == ["ais:2"]
+    beyond = TargetState("ais:3", 622_810.0, 380_949.0, 0.0, 0.0, 10.0)  # 730 km away
+    sc, dropped = world_scenario(base, [far, at_ramp, beyond], frame_velocity=(0.0, 1.0))
+    assert dropped == ["ais:2", "ais:3"]
     assert [(o.x, o.y, o.radius, o.vx, o.vy) for o in sc.obstacles] == [
         (40.0, 30.0, 4.0, 0.5, -1.0)]
     assert (sc.environment.current_speed, sc.environment.current_dir_deg) == pytest.approx(

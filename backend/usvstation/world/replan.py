@@ -19,7 +19,7 @@ from typing import Literal
 
 import numpy as np
 
-from usvstation.scenario import Environment, Obstacle, Scenario, Start
+from usvstation.scenario import MAX_COORD, Environment, Obstacle, Scenario, Start
 from usvstation.world.monitor import Assessment, TargetState
 
 Policy = Literal["auto", "confirm", "off"]
@@ -69,6 +69,9 @@ def replan_scenario(base: Scenario, a: Assessment, targets: list[TargetState],
     obstacles, dropped = [], []
     for t in targets:
         ox, oy = t.x + t.vx * lead, t.y + t.vy * lead
+        if max(abs(ox), abs(oy)) > MAX_COORD:
+            dropped.append(t.id)  # beyond the scenario's 20 km range
+            continue
         r_l = t.radius + vessel.length + vessel.compensation_radius
         if math.hypot(x - ox, y - oy) < r_l or math.hypot(ox, oy) < r_l:
             dropped.append(t.id)
@@ -107,10 +110,14 @@ def world_scenario(base: Scenario, targets: list[TargetState],
     """`base` planned against the world as it is now: its obstacles are the world's
     targets (ramp frame, relative velocities; the `manual` ones are base's own obstacles)
     and the ship's motion is an apparent current. Targets whose inflated circle holds the
-    start or the goal are left out and named."""
+    start or the goal, and targets beyond the scenario's 20 km range, are left out and
+    named."""
     vessel = base.vessel
     obstacles, dropped = [], []
     for t in targets:
+        if max(abs(t.x), abs(t.y)) > MAX_COORD:
+            dropped.append(t.id)  # far beyond the plan: no planning problem holds it
+            continue
         r_l = t.radius + vessel.length + vessel.compensation_radius
         if math.hypot(base.start.x - t.x, base.start.y - t.y) < r_l \
                 or math.hypot(base.goal.x - t.x, base.goal.y - t.y) < r_l:
