@@ -68,6 +68,7 @@ def artifacts() -> Path:
 @pytest.fixture(scope="module")
 def station(tmp_path_factory):
     st = StationProcess(tmp_path_factory.mktemp("data"), "--sim-speed", "5")
+    st.wait_link_up()
     yield st
     st.stop()
 

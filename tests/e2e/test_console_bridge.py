@@ -25,7 +25,7 @@ from usvstation.scenario import load_scenario
 from usvstation.serveproc import SCRIPT
 
 INSTRUMENTS = {  # id: what it shows once telemetry arrives
-    "boat-state": r"^[A-Z_]+ \([A-Z_]+\)$", "boat-x": r"^-?\d+\.\d$", "boat-y": r"^-?\d+\.\d$",
+    "boat-state": r"^[A-Z_]+( \(mission \d+\))?$", "boat-x": r"^-?\d+\.\d$", "boat-y": r"^-?\d+\.\d$",
     "boat-speed": r"^\d+\.\d\d$", "boat-cog": r"^\d+$", "boat-heading": r"^-?\d+$",
     "boat-compass": r"^\d+$", "boat-xte": r"^-?\d+\.\d$", "boat-battery": r"^\d+\.\d\d$",
     "boat-fix": r"^(no GPS|no fix|2D|3D|DGPS|RTK float|RTK fixed)$", "boat-sats": r"^\d+$",
@@ -168,6 +168,7 @@ def chart_station(tmp_path_factory):
     (charts / "broken.mbtiles").write_text("not a database")
     st = StationProcess(tmp_path_factory.mktemp("data"), "--sim-speed", "5", "--charts",
                         str(charts))
+    st.wait_link_up()
     yield st
     st.stop()
 

@@ -45,6 +45,7 @@ def station(tmp_path_factory):
     hz = WALL_HZ / SIM_SPEED
     st = StationProcess(tmp_path_factory.mktemp("data"), "--sim-speed", str(SIM_SPEED),
                         env={"USV_STATION_TELEMETRY_HZ": str(hz)})
+    st.wait_link_up()
     yield st
     st.stop()
 
