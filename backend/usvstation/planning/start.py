@@ -44,16 +44,52 @@ class Prefix:
 
 
 def start_state(scenario: Scenario) -> StartState:
-    """The scenario's start; its heading binds the first leg when the boat moves."""
+    """The scenario's start; its heading binds the first leg when the boat moves.
+
+    The plan's start speed is a ground speed along the first leg (eq. 11). A boat
+    that a current sets back (its ground velocity has no component along its hull,
+    e.g. 0.5 m/s through the water against 1.5 m/s) is planned along its hull
+    heading, from the ground speed closest to its own that the leg's window of
+    speeds through the water admits (see `ground_window`).
+    """
     s, v = scenario.start, scenario.vessel
     h = math.radians(s.heading_deg)
     cx, cy = current_vector(scenario)
     moving = s.speed >= MOVING_START_SPEED
-    ground = math.hypot(s.speed * math.cos(h) + cx, s.speed * math.sin(h) + cy) if moving \
-        else s.speed
-    course = ground_course(h, s.speed, cx, cy)
-    return StartState(s.x, s.y, h, float(np.clip(ground, v.speed_min, v.speed_max)),
-                      bound=moving, course=course)
+    course = start_course(h, s.speed, cx, cy)
+    if not moving and (cx, cy) == (0.0, 0.0):
+        return StartState(s.x, s.y, h, float(np.clip(s.speed, v.speed_min, v.speed_max)),
+                          bound=False, course=course)
+    gx, gy = s.speed * math.cos(h) + cx, s.speed * math.sin(h) + cy
+    along = gx * math.cos(course) + gy * math.sin(course)  # own ground speed on the course
+    lo, hi = ground_window(course, cx, cy, v.speed_min, v.speed_max)
+    speed = float(np.clip(along, lo, hi)) if lo <= hi else float(
+        np.clip(math.hypot(gx, gy), v.speed_min, v.speed_max))
+    return StartState(s.x, s.y, h, speed, bound=moving, course=course)
+
+
+def ground_window(course: float, cx: float, cy: float, speed_min: float,
+                  speed_max: float) -> tuple[float, float]:
+    """Ground speeds along `course` within [speed_min, speed_max] whose speed through the
+    water (ground velocity minus current) lies in [speed_min, speed_max] too, with 1 %
+    slack at both ends (lo > hi: none)."""
+    ux, uy = math.cos(course), math.sin(course)
+    along, across = ux * cx + uy * cy, ux * cy - uy * cx
+    lo_w, hi_w = 1.01 * speed_min, 0.99 * speed_max
+    if across * across >= hi_w * hi_w:
+        return 1.0, 0.0
+    lo = along + math.sqrt(max(lo_w * lo_w - across * across, 0.0))
+    hi = along + math.sqrt(hi_w * hi_w - across * across)
+    return max(lo, speed_min), min(hi, speed_max)
+
+
+def start_course(heading: float, water_speed: float, cx: float, cy: float) -> float:
+    """The course the first leg is bound around: the course over ground, or the hull
+    heading when the current sets the boat back (no ground way along its hull)."""
+    gx, gy = water_speed * math.cos(heading) + cx, water_speed * math.sin(heading) + cy
+    if gx * math.cos(heading) + gy * math.sin(heading) <= 0.0:
+        return heading
+    return ground_course(heading, water_speed, cx, cy)
 
 
 def ground_course(heading: float, water_speed: float, cx: float, cy: float) -> float:
@@ -76,7 +112,7 @@ def needs_prefix(scenario: Scenario, opts: IGAOptions) -> bool:
         return False
     h = math.radians(s.heading_deg)
     cx, cy = current_vector(scenario)
-    course = ground_course(h, s.speed, cx, cy)
+    course = start_course(h, s.speed, cx, cy)
     bearing = math.atan2(scenario.goal.y - s.y, scenario.goal.x - s.x)
     return abs(math.remainder(course - bearing, 2 * math.pi)) > ALIGNED
 
