@@ -3,11 +3,12 @@
 The IGA's encoding steps towards the goal along the planning frame's x axis
 (eq. 10), so its first leg cannot leave a boat that points away, and a
 recovery cannot start within a few metres of the ramp or behind it. Such a
-start gets a prefix: short legs at constant speed through the water, the hull
-turning by at most 0.6 turn_max per waypoint, first out to sea (recoveries
+start gets a prefix: short legs at about constant speed through the water, the
+course over ground turning by at most 0.6 turn_max per waypoint (the hull crabs
+into a current), first out to sea (recoveries
 that start too close in, behind or beside the ramp) and then round towards
 the goal until the remaining turn is small. The IGA plans the rest from the
-prefix's end, its first leg bound to the prefix's last heading. Prefix legs
+prefix's end, its first leg bound to the prefix's last course. Prefix legs
 are checked against the inflated (and time-swept) obstacles exactly (eq. 9).
 """
 
@@ -72,7 +73,9 @@ def ground_window(course: float, cx: float, cy: float, speed_min: float,
                   speed_max: float) -> tuple[float, float]:
     """Ground speeds along `course` within [speed_min, speed_max] whose speed through the
     water (ground velocity minus current) lies in [speed_min, speed_max] too, with 1 %
-    slack at both ends (lo > hi: none)."""
+    slack at both ends in a current (lo > hi: none)."""
+    if (cx, cy) == (0.0, 0.0):
+        return speed_min, speed_max
     ux, uy = math.cos(course), math.sin(course)
     along, across = ux * cx + uy * cy, ux * cy - uy * cx
     lo_w, hi_w = 1.01 * speed_min, 0.99 * speed_max
@@ -129,61 +132,68 @@ def prefixes(scenario: Scenario, opts: IGAOptions, margin: float) -> list[Prefix
 
 
 def _steer(scenario: Scenario, opts: IGAOptions, side: float) -> Prefix | None:
+    """Legs whose course over ground turns by at most 0.6 turn_max per waypoint; each leg's
+    ground speed is the one that makes `water` m/s through the water on it, and every
+    waypoint's speed lies in the through-water window of both legs that meet there."""
     v = scenario.vessel
     s = scenario.start
     cx, cy = current_vector(scenario)
+    drift = math.hypot(cx, cy)
     water = float(np.clip(max(s.speed, 1.0), v.speed_min, v.speed_max))
-    if abs(complex(cx, cy)) >= water:
-        water = v.speed_max
+    if drift >= 0.8 * water:  # make way against the current in every direction
+        water = max(water, min(0.95 * v.speed_max, drift / 0.8))
     step = 0.6 * math.radians(v.turn_max_deg)
-    leg = max(3.0, 2.0 * v.length, 2.0 * water, 4.0 * math.hypot(cx, cy))
-    h = math.radians(s.heading_deg) if s.speed >= MOVING_START_SPEED else None
+    leg = max(3.0, 2.0 * v.length, 2.0 * water, 4.0 * drift)
+    moving = s.speed >= MOVING_START_SPEED
+    k = start_course(math.radians(s.heading_deg), s.speed, cx, cy) if moving else None
     x, y = s.x, s.y
     recovery = scenario.kind == "recovery"
     x_out = x_needed(opts) + 0.5 * abs(s.y) if recovery and s.x < x_needed(opts) else None
-    xs, ys, hulls = [x], [y], []
+    xs, ys, courses = [x], [y], []
     for _ in range(MAX_PREFIX_LEGS):
         if x_out is not None and x < x_out:
             target = 0.0
         else:
             x_out = None
-            target = _crab(math.atan2(scenario.goal.y - y, scenario.goal.x - x), water, cx, cy)
-            if h is not None and abs(math.remainder(h - target, 2 * math.pi)) <= step / 2:
+            target = math.atan2(scenario.goal.y - y, scenario.goal.x - x)
+            if k is not None and abs(math.remainder(k - target, 2 * math.pi)) <= step / 2:
                 break
-        if h is None:
-            h = target
+        if k is None:
+            k = target
+        elif not courses:
+            # the first leg turns the hull (the rule binds the hull, not the course)
+            h = math.radians(s.heading_deg)
+            err = math.remainder(_crab(target, water, cx, cy) - h, 2 * math.pi)
+            turn = err if abs(err) <= step else (
+                side if abs(err) > math.pi - step else math.copysign(1.0, err)) * step
+            k = ground_course(h + turn, water, cx, cy)
         else:
-            err = math.remainder(target - h, 2 * math.pi)
+            err = math.remainder(target - k, 2 * math.pi)
             if abs(err) <= step:
-                h = target
+                k = target
             else:
-                h += (side if abs(err) > math.pi - step else math.copysign(1.0, err)) * step
-        gx, gy = water * math.cos(h) + cx, water * math.sin(h) + cy
-        g = math.hypot(gx, gy)
+                k += (side if abs(err) > math.pi - step else math.copysign(1.0, err)) * step
         run = leg
-        if x_out is not None and h == target and gx > 0.0:
-            run = max(leg, min(x_out - x, 200.0) * g / gx)  # straight out in one leg
-        x, y = x + gx / g * run, y + gy / g * run
+        if x_out is not None and k == target:
+            run = max(leg, min(x_out - x, 200.0))  # straight out in one leg
+        x, y = x + math.cos(k) * run, y + math.sin(k) * run
         xs.append(x)
         ys.append(y)
-        hulls.append(h)
+        courses.append(k)
     else:
         return None
     if len(xs) == 1:
         return None
-    speeds = []
-    for i in range(len(xs) - 1):
-        hh = hulls[i]
-        speeds.append(math.hypot(water * math.cos(hh) + cx, water * math.sin(hh) + cy))
-    speeds.append(speeds[-1])
-    speeds = [float(np.clip(sp, v.speed_min, v.speed_max)) for sp in speeds]
+    speeds = _joint_speeds(courses, water, cx, cy, v.speed_min, v.speed_max)
+    if speeds is None:
+        return None
     t = [0.0]
     for i in range(len(xs) - 1):
         d = math.hypot(xs[i + 1] - xs[i], ys[i + 1] - ys[i])
         t.append(t[-1] + 2.0 * d / (speeds[i] + speeds[i + 1]))
-    hh = hulls[-1]
-    course = math.atan2(water * math.sin(hh) + cy, water * math.cos(hh) + cx)
-    end = StartState(xs[-1], ys[-1], hh, speeds[-1], t[-1], bound=True, course=course)
+    kk, g = courses[-1], speeds[-1]
+    hull = math.atan2(g * math.sin(kk) - cy, g * math.cos(kk) - cx)
+    end = StartState(xs[-1], ys[-1], hull, g, t[-1], bound=True, course=kk)
     return Prefix(xs, ys, t, speeds, end)
 
 
@@ -191,6 +201,27 @@ def _crab(course: float, water: float, cx: float, cy: float) -> float:
     """Hull heading that makes good `course` over ground at `water` m/s in the current."""
     across = -cx * math.sin(course) + cy * math.cos(course)
     return course - math.asin(max(-1.0, min(1.0, across / water)))
+
+
+def _joint_speeds(courses: list[float], water: float, cx: float, cy: float,
+                  speed_min: float, speed_max: float) -> list[float] | None:
+    """Ground speed at every prefix waypoint (eq. 11's v_i): the one that makes `water`
+    through the water on the leg it starts, moved into the window of both adjacent legs;
+    None where the two windows do not meet."""
+    def wanted(k: float) -> float:
+        along = math.cos(k) * cx + math.sin(k) * cy
+        across = math.cos(k) * cy - math.sin(k) * cx
+        return along + math.sqrt(max(water * water - across * across, 0.0))
+
+    windows = [ground_window(k, cx, cy, speed_min, speed_max) for k in courses]
+    out = []
+    for i in range(len(courses) + 1):
+        near = windows[max(i - 1, 0):i + 1]
+        lo, hi = max(w[0] for w in near), min(w[1] for w in near)
+        if lo > hi:
+            return None
+        out.append(float(np.clip(wanted(courses[min(i, len(courses) - 1)]), lo, hi)))
+    return out
 
 
 def _field(scenario: Scenario, margin: float) -> ObstacleField:
