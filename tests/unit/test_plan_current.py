@@ -97,3 +97,15 @@ def test_bench_episode_with_the_ship_at_two_metres_a_second(seed):
     sc = episode_scenario(np.random.default_rng(1000 + seed), 2.0)
     plan = plan_scenario(sc, seed=seed)
     assert_valid(plan, sc)
+
+
+@pytest.mark.parametrize("heading", [0.0, 90.0, 135.0])
+@pytest.mark.parametrize(("current", "direction_deg"), [(1.5, 0.0), (2.0, 0.0), (2.0, 90.0),
+                                                        (1.0, 180.0)])
+def test_a_boat_pointing_away_in_a_strong_current_turns_within_the_limit(
+        heading, current, direction_deg):
+    # the run-out turns the hull by at most turn_max on its first leg and the course over
+    # ground by at most turn_max at every waypoint, its speeds through the water in limits
+    sc = recovery(current, direction_deg, speed=1.5, heading=heading)
+    plan = plan_scenario(sc, seed=1)
+    assert_valid(plan, sc)

@@ -150,6 +150,7 @@ def _steer(scenario: Scenario, opts: IGAOptions, side: float) -> Prefix | None:
     recovery = scenario.kind == "recovery"
     x_out = x_needed(opts) + 0.5 * abs(s.y) if recovery and s.x < x_needed(opts) else None
     xs, ys, courses = [x], [y], []
+    first_water = water
     for _ in range(MAX_PREFIX_LEGS):
         if x_out is not None and x < x_out:
             target = 0.0
@@ -166,7 +167,8 @@ def _steer(scenario: Scenario, opts: IGAOptions, side: float) -> Prefix | None:
             err = math.remainder(_crab(target, water, cx, cy) - h, 2 * math.pi)
             turn = err if abs(err) <= step else (
                 side if abs(err) > math.pi - step else math.copysign(1.0, err)) * step
-            k = ground_course(h + turn, water, cx, cy)
+            first_water = _water_within(h + turn, water, cx, cy, v.speed_min, v.speed_max)
+            k = ground_course(h + turn, first_water, cx, cy)
         else:
             err = math.remainder(target - k, 2 * math.pi)
             if abs(err) <= step:
@@ -184,7 +186,8 @@ def _steer(scenario: Scenario, opts: IGAOptions, side: float) -> Prefix | None:
         return None
     if len(xs) == 1:
         return None
-    speeds = _joint_speeds(courses, water, cx, cy, v.speed_min, v.speed_max)
+    waters = [first_water] + [water] * (len(courses) - 1)
+    speeds = _joint_speeds(courses, waters, cx, cy, v.speed_min, v.speed_max)
     if speeds is None:
         return None
     t = [0.0]
@@ -203,12 +206,24 @@ def _crab(course: float, water: float, cx: float, cy: float) -> float:
     return course - math.asin(max(-1.0, min(1.0, across / water)))
 
 
-def _joint_speeds(courses: list[float], water: float, cx: float, cy: float,
+def _water_within(hull: float, water: float, cx: float, cy: float, speed_min: float,
+                  speed_max: float) -> float:
+    """The most speed through the water, at most `water`, at which a hull at `hull` goes no
+    faster than 0.99 speed_max over ground (running with the current)."""
+    along = math.cos(hull) * cx + math.sin(hull) * cy
+    disc = along * along - (cx * cx + cy * cy) + (0.99 * speed_max) ** 2
+    if (cx, cy) == (0.0, 0.0) or disc < 0.0:
+        return water
+    return float(np.clip(-along + math.sqrt(disc), 1.01 * speed_min, water))
+
+
+def _joint_speeds(courses: list[float], waters: list[float], cx: float, cy: float,
                   speed_min: float, speed_max: float) -> list[float] | None:
-    """Ground speed at every prefix waypoint (eq. 11's v_i): the one that makes `water`
+    """Ground speed at every prefix waypoint (eq. 11's v_i): the one that makes waters[i]
     through the water on the leg it starts, moved into the window of both adjacent legs;
     None where the two windows do not meet."""
-    def wanted(k: float) -> float:
+    def wanted(i: int) -> float:
+        k, water = courses[i], waters[i]
         along = math.cos(k) * cx + math.sin(k) * cy
         across = math.cos(k) * cy - math.sin(k) * cx
         return along + math.sqrt(max(water * water - across * across, 0.0))
@@ -220,7 +235,7 @@ def _joint_speeds(courses: list[float], water: float, cx: float, cy: float,
         lo, hi = max(w[0] for w in near), min(w[1] for w in near)
         if lo > hi:
             return None
-        out.append(float(np.clip(wanted(courses[min(i, len(courses) - 1)]), lo, hi)))
+        out.append(float(np.clip(wanted(min(i, len(courses) - 1)), lo, hi)))
     return out
 
 
