@@ -3,11 +3,12 @@
 The IGA's encoding steps towards the goal along the planning frame's x axis
 (eq. 10), so its first leg cannot leave a boat that points away, and a
 recovery cannot start within a few metres of the ramp or behind it. Such a
-start gets a prefix: short legs at constant speed through the water, the hull
-turning by at most 0.6 turn_max per waypoint, first out to sea (recoveries
+start gets a prefix: short legs at about constant speed through the water, the
+course over ground turning by at most 0.6 turn_max per waypoint (the hull crabs
+into a current), first out to sea (recoveries
 that start too close in, behind or beside the ramp) and then round towards
 the goal until the remaining turn is small. The IGA plans the rest from the
-prefix's end, its first leg bound to the prefix's last heading. Prefix legs
+prefix's end, its first leg bound to the prefix's last course. Prefix legs
 are checked against the inflated (and time-swept) obstacles exactly (eq. 9).
 """
 
@@ -44,16 +45,54 @@ class Prefix:
 
 
 def start_state(scenario: Scenario) -> StartState:
-    """The scenario's start; its heading binds the first leg when the boat moves."""
+    """The scenario's start; its heading binds the first leg when the boat moves.
+
+    The plan's start speed is a ground speed along the first leg (eq. 11). A boat
+    that a current sets back (its ground velocity has no component along its hull,
+    e.g. 0.5 m/s through the water against 1.5 m/s) is planned along its hull
+    heading, from the ground speed closest to its own that the leg's window of
+    speeds through the water admits (see `ground_window`).
+    """
     s, v = scenario.start, scenario.vessel
     h = math.radians(s.heading_deg)
     cx, cy = current_vector(scenario)
     moving = s.speed >= MOVING_START_SPEED
-    ground = math.hypot(s.speed * math.cos(h) + cx, s.speed * math.sin(h) + cy) if moving \
-        else s.speed
-    course = ground_course(h, s.speed, cx, cy)
-    return StartState(s.x, s.y, h, float(np.clip(ground, v.speed_min, v.speed_max)),
-                      bound=moving, course=course)
+    course = start_course(h, s.speed, cx, cy)
+    if not moving and (cx, cy) == (0.0, 0.0):
+        return StartState(s.x, s.y, h, float(np.clip(s.speed, v.speed_min, v.speed_max)),
+                          bound=False, course=course)
+    gx, gy = s.speed * math.cos(h) + cx, s.speed * math.sin(h) + cy
+    along = gx * math.cos(course) + gy * math.sin(course)  # own ground speed on the course
+    lo, hi = ground_window(course, cx, cy, v.speed_min, v.speed_max)
+    speed = float(np.clip(along, lo, hi)) if lo <= hi else float(
+        np.clip(math.hypot(gx, gy), v.speed_min, v.speed_max))
+    return StartState(s.x, s.y, h, speed, bound=moving, course=course)
+
+
+def ground_window(course: float, cx: float, cy: float, speed_min: float,
+                  speed_max: float) -> tuple[float, float]:
+    """Ground speeds along `course` within [speed_min, speed_max] whose speed through the
+    water (ground velocity minus current) lies in [speed_min, speed_max] too, with 1 %
+    slack at both ends in a current (lo > hi: none)."""
+    if (cx, cy) == (0.0, 0.0):
+        return speed_min, speed_max
+    ux, uy = math.cos(course), math.sin(course)
+    along, across = ux * cx + uy * cy, ux * cy - uy * cx
+    lo_w, hi_w = 1.01 * speed_min, 0.99 * speed_max
+    if across * across >= hi_w * hi_w:
+        return 1.0, 0.0
+    lo = along + math.sqrt(max(lo_w * lo_w - across * across, 0.0))
+    hi = along + math.sqrt(hi_w * hi_w - across * across)
+    return max(lo, speed_min), min(hi, speed_max)
+
+
+def start_course(heading: float, water_speed: float, cx: float, cy: float) -> float:
+    """The course the first leg is bound around: the course over ground, or the hull
+    heading when the current sets the boat back (no ground way along its hull)."""
+    gx, gy = water_speed * math.cos(heading) + cx, water_speed * math.sin(heading) + cy
+    if gx * math.cos(heading) + gy * math.sin(heading) <= 0.0:
+        return heading
+    return ground_course(heading, water_speed, cx, cy)
 
 
 def ground_course(heading: float, water_speed: float, cx: float, cy: float) -> float:
@@ -76,7 +115,7 @@ def needs_prefix(scenario: Scenario, opts: IGAOptions) -> bool:
         return False
     h = math.radians(s.heading_deg)
     cx, cy = current_vector(scenario)
-    course = ground_course(h, s.speed, cx, cy)
+    course = start_course(h, s.speed, cx, cy)
     bearing = math.atan2(scenario.goal.y - s.y, scenario.goal.x - s.x)
     return abs(math.remainder(course - bearing, 2 * math.pi)) > ALIGNED
 
@@ -93,61 +132,71 @@ def prefixes(scenario: Scenario, opts: IGAOptions, margin: float) -> list[Prefix
 
 
 def _steer(scenario: Scenario, opts: IGAOptions, side: float) -> Prefix | None:
+    """Legs whose course over ground turns by at most 0.6 turn_max per waypoint; each leg's
+    ground speed is the one that makes `water` m/s through the water on it, and every
+    waypoint's speed lies in the through-water window of both legs that meet there."""
     v = scenario.vessel
     s = scenario.start
     cx, cy = current_vector(scenario)
+    drift = math.hypot(cx, cy)
     water = float(np.clip(max(s.speed, 1.0), v.speed_min, v.speed_max))
-    if abs(complex(cx, cy)) >= water:
-        water = v.speed_max
+    if drift >= 0.8 * water:  # make way against the current in every direction
+        water = max(water, min(0.95 * v.speed_max, drift / 0.8))
     step = 0.6 * math.radians(v.turn_max_deg)
-    leg = max(3.0, 2.0 * v.length, 2.0 * water, 4.0 * math.hypot(cx, cy))
-    h = math.radians(s.heading_deg) if s.speed >= MOVING_START_SPEED else None
+    leg = max(3.0, 2.0 * v.length, 2.0 * water, 4.0 * drift)
+    moving = s.speed >= MOVING_START_SPEED
+    k = start_course(math.radians(s.heading_deg), s.speed, cx, cy) if moving else None
     x, y = s.x, s.y
     recovery = scenario.kind == "recovery"
     x_out = x_needed(opts) + 0.5 * abs(s.y) if recovery and s.x < x_needed(opts) else None
-    xs, ys, hulls = [x], [y], []
+    xs, ys, courses = [x], [y], []
+    first_water = water
     for _ in range(MAX_PREFIX_LEGS):
         if x_out is not None and x < x_out:
             target = 0.0
         else:
             x_out = None
-            target = _crab(math.atan2(scenario.goal.y - y, scenario.goal.x - x), water, cx, cy)
-            if h is not None and abs(math.remainder(h - target, 2 * math.pi)) <= step / 2:
+            target = math.atan2(scenario.goal.y - y, scenario.goal.x - x)
+            if k is not None and abs(math.remainder(k - target, 2 * math.pi)) <= step / 2:
                 break
-        if h is None:
-            h = target
+        if k is None:
+            k = target
+        elif not courses:
+            # the first leg turns the hull (the rule binds the hull, not the course)
+            h = math.radians(s.heading_deg)
+            err = math.remainder(_crab(target, water, cx, cy) - h, 2 * math.pi)
+            turn = err if abs(err) <= step else (
+                side if abs(err) > math.pi - step else math.copysign(1.0, err)) * step
+            first_water = _water_within(h + turn, water, cx, cy, v.speed_min, v.speed_max)
+            k = ground_course(h + turn, first_water, cx, cy)
         else:
-            err = math.remainder(target - h, 2 * math.pi)
+            err = math.remainder(target - k, 2 * math.pi)
             if abs(err) <= step:
-                h = target
+                k = target
             else:
-                h += (side if abs(err) > math.pi - step else math.copysign(1.0, err)) * step
-        gx, gy = water * math.cos(h) + cx, water * math.sin(h) + cy
-        g = math.hypot(gx, gy)
+                k += (side if abs(err) > math.pi - step else math.copysign(1.0, err)) * step
         run = leg
-        if x_out is not None and h == target and gx > 0.0:
-            run = max(leg, min(x_out - x, 200.0) * g / gx)  # straight out in one leg
-        x, y = x + gx / g * run, y + gy / g * run
+        if x_out is not None and k == target:
+            run = max(leg, min(x_out - x, 200.0))  # straight out in one leg
+        x, y = x + math.cos(k) * run, y + math.sin(k) * run
         xs.append(x)
         ys.append(y)
-        hulls.append(h)
+        courses.append(k)
     else:
         return None
     if len(xs) == 1:
         return None
-    speeds = []
-    for i in range(len(xs) - 1):
-        hh = hulls[i]
-        speeds.append(math.hypot(water * math.cos(hh) + cx, water * math.sin(hh) + cy))
-    speeds.append(speeds[-1])
-    speeds = [float(np.clip(sp, v.speed_min, v.speed_max)) for sp in speeds]
+    waters = [first_water] + [water] * (len(courses) - 1)
+    speeds = _joint_speeds(courses, waters, cx, cy, v.speed_min, v.speed_max)
+    if speeds is None:
+        return None
     t = [0.0]
     for i in range(len(xs) - 1):
         d = math.hypot(xs[i + 1] - xs[i], ys[i + 1] - ys[i])
         t.append(t[-1] + 2.0 * d / (speeds[i] + speeds[i + 1]))
-    hh = hulls[-1]
-    course = math.atan2(water * math.sin(hh) + cy, water * math.cos(hh) + cx)
-    end = StartState(xs[-1], ys[-1], hh, speeds[-1], t[-1], bound=True, course=course)
+    kk, g = courses[-1], speeds[-1]
+    hull = math.atan2(g * math.sin(kk) - cy, g * math.cos(kk) - cx)
+    end = StartState(xs[-1], ys[-1], hull, g, t[-1], bound=True, course=kk)
     return Prefix(xs, ys, t, speeds, end)
 
 
@@ -155,6 +204,39 @@ def _crab(course: float, water: float, cx: float, cy: float) -> float:
     """Hull heading that makes good `course` over ground at `water` m/s in the current."""
     across = -cx * math.sin(course) + cy * math.cos(course)
     return course - math.asin(max(-1.0, min(1.0, across / water)))
+
+
+def _water_within(hull: float, water: float, cx: float, cy: float, speed_min: float,
+                  speed_max: float) -> float:
+    """The most speed through the water, at most `water`, at which a hull at `hull` goes no
+    faster than 0.99 speed_max over ground (running with the current)."""
+    along = math.cos(hull) * cx + math.sin(hull) * cy
+    disc = along * along - (cx * cx + cy * cy) + (0.99 * speed_max) ** 2
+    if (cx, cy) == (0.0, 0.0) or disc < 0.0:
+        return water
+    return float(np.clip(-along + math.sqrt(disc), 1.01 * speed_min, water))
+
+
+def _joint_speeds(courses: list[float], waters: list[float], cx: float, cy: float,
+                  speed_min: float, speed_max: float) -> list[float] | None:
+    """Ground speed at every prefix waypoint (eq. 11's v_i): the one that makes waters[i]
+    through the water on the leg it starts, moved into the window of both adjacent legs;
+    None where the two windows do not meet."""
+    def wanted(i: int) -> float:
+        k, water = courses[i], waters[i]
+        along = math.cos(k) * cx + math.sin(k) * cy
+        across = math.cos(k) * cy - math.sin(k) * cx
+        return along + math.sqrt(max(water * water - across * across, 0.0))
+
+    windows = [ground_window(k, cx, cy, speed_min, speed_max) for k in courses]
+    out = []
+    for i in range(len(courses) + 1):
+        near = windows[max(i - 1, 0):i + 1]
+        lo, hi = max(w[0] for w in near), min(w[1] for w in near)
+        if lo > hi:
+            return None
+        out.append(float(np.clip(wanted(min(i, len(courses) - 1)), lo, hi)))
+    return out
 
 
 def _field(scenario: Scenario, margin: float) -> ObstacleField:
