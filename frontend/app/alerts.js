@@ -64,7 +64,7 @@ function render() {
 }
 
 async function acknowledge(alert) {
-  if (typeof alert.id === 'string') { // the console's own
+  if (alert.local) { // the console's own: the station has no record of it
     alert.acknowledged = true;
     render();
     return;
@@ -89,12 +89,12 @@ function received(alert, { fresh }) {
 export function localAlert(level, kind, message) {
   localId += 1;
   received({ id: `local-${localId}`, time: new Date().toISOString(), level, kind, message,
-    target_id: null, run_id: null, acknowledged: false }, { fresh: true });
+    target_id: null, run_id: null, acknowledged: false, local: true }, { fresh: true });
 }
 
 export function clearLocal(kind) {
   for (const a of alerts.values()) {
-    if (typeof a.id === 'string' && a.kind === kind) a.acknowledged = true;
+    if (a.local && a.kind === kind) a.acknowledged = true;
   }
   render();
 }

@@ -25,7 +25,8 @@ from usvstation.scenario import load_scenario
 from usvstation.serveproc import SCRIPT
 
 INSTRUMENTS = {  # id: what it shows once telemetry arrives
-    "boat-state": r"^[A-Z_]+( \(mission \d+\))?$", "boat-x": r"^-?\d+\.\d$", "boat-y": r"^-?\d+\.\d$",
+    "boat-state": r"^[A-Z_]+( \(mission \d+\))?$",
+    "boat-x": r"^-?\d+\.\d$", "boat-y": r"^-?\d+\.\d$",
     "boat-speed": r"^\d+\.\d\d$", "boat-cog": r"^\d+$", "boat-heading": r"^-?\d+$",
     "boat-compass": r"^\d+$", "boat-xte": r"^-?\d+\.\d$", "boat-battery": r"^\d+\.\d\d$",
     "boat-fix": r"^(no GPS|no fix|2D|3D|DGPS|RTK float|RTK fixed)$", "boat-sats": r"^\d+$",
@@ -104,8 +105,11 @@ def test_instruments_grey_and_the_link_alert_when_the_link_is_cut(browser, boat_
         page.click("#alerts-history")
         page.click(f"button[aria-label='acknowledge: {lost[0]['message']}']")
         expect(page.locator("#alert-now")).to_be_empty()
-        acked = station.client.get("/api/alerts").json()
-        assert [a["acknowledged"] for a in acked if a["kind"] == "link_lost"] == [True]
+        deadline = time.monotonic() + 10  # the console's POST .../ack lands
+        while [a["acknowledged"] for a in station.client.get("/api/alerts").json()
+               if a["kind"] == "link_lost"] != [True]:
+            assert time.monotonic() < deadline, "the acknowledgement was not stored"
+            time.sleep(0.1)
         # the boat back: fresh values, not grey
         sim.send_signal(signal.SIGCONT)
         expect(page.locator("[data-instrument=sog]")).not_to_have_class(
