@@ -25,6 +25,9 @@ COPY --from=console /frontend/index.html /opt/usv-station/frontend/index.html
 COPY --from=console /frontend/app /opt/usv-station/frontend/app
 COPY --from=console /frontend/node_modules/leaflet/dist /opt/usv-station/frontend/node_modules/leaflet/dist
 COPY --from=console /frontend/node_modules/uplot/dist /opt/usv-station/frontend/node_modules/uplot/dist
+# /docs and /redoc from the station itself (no CDN on a ship)
+COPY --from=console /frontend/node_modules/swagger-ui-dist /opt/usv-station/frontend/node_modules/swagger-ui-dist
+COPY --from=console /frontend/node_modules/redoc/bundles /opt/usv-station/frontend/node_modules/redoc/bundles
 USER station
 WORKDIR /home/station
 ENV USV_STATION_DATA_DIR=/data \
