@@ -137,6 +137,7 @@ def test_turning_target_warns_proposes_a_replan_and_confirm_swaps_it(station) ->
             rows = c.get("/api/telemetry", params={"limit": 100_000}).json()
             clearance = min(math.hypot(r["x"] - PARK[0], r["y"] - PARK[1]) for r in rows) \
                 - RADIUS - 1.0
+            print(f"true clearance to the parked target {clearance:.2f} m")
             assert clearance > 0.0
 
         ack = c.post(f"/api/alerts/{warning['id']}/ack")

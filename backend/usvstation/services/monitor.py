@@ -54,12 +54,12 @@ ASSESS_MIN_INTERVAL_S = 0.1  # every frame up to 10 Hz (telemetry runs at 5 Hz o
 DEFAULT_TIME_MARGIN_S = 5.0
 MIN_WARNING_M = 0.3  # the clearance warning threshold when R_c is smaller
 OWN_SHIP_AGE_S = (5.0, 10.0, 30.0)  # a silent own-ship position: advisory, caution, warning
-# Re-plans start this far ahead (wall-clock seconds) of the frame that raised them, where
-# the boat swaps onto them: under `auto`, planning (tens of ms), the hot-swap upload (about
-# 0.1 s for 30 waypoints at 57600 baud) and its retries fit well inside; under `confirm`
-# the operator has about 8 s to accept before the instant passes and the boat denies the
-# swap (the re-plan then fails with the boat's reason and the old mission runs on).
-SWAP_LEAD_S = {"auto": 2.0, "confirm": 10.0, "off": 2.0}
+# Re-plans start this far ahead (wall-clock seconds, times --sim-speed in boat time) of the
+# frame they are built from, where the boat swaps onto them: planning (tens of ms), the
+# hot-swap upload (about 0.1 s for 30 waypoints at 57600 baud) and its retries fit well
+# inside. A proposal the operator confirms is built afresh from the latest frame, so its
+# instant never passes while the operator reads it.
+SWAP_LEAD_S = 2.0
 NO_HOT_SWAP = ("the boat link has no hot swap (usv-link 2, BoatService.swap_mission): "
                "the re-plan is kept as a plan; hold, abort and upload it to use it")
 
@@ -82,6 +82,10 @@ class MonitorService:
         self.last: dict[str, Any] | None = None
         self.last_assessment: Assessment | None = None
         self.last_row: dict[str, Any] | None = None
+        # the latest assessment with what it was made from: (assessment, targets, boat,
+        # ramp-frame velocity of the ship), for a re-plan built at any moment
+        self.last_inputs: tuple[Assessment, list[TargetState], BoatState,
+                                tuple[float, float]] | None = None
         self.frames = 0
         self._published_at = -1e9
         self._assessed_at = -1e9
@@ -172,6 +176,7 @@ class MonitorService:
                    (float(fvx), float(fvy)))
         self.frames += 1
         self.last_assessment, self.last_row = a, row
+        self.last_inputs = (a, targets, boat, (float(fvx), float(fvy)))
         events = self.tracker.update(a)
         own = self.world.world.own
         if pose.moving and own.t_fix is not None:
@@ -236,24 +241,33 @@ class ReplanService:
                   "dropped_targets": []}
         self.replans[record["id"]] = record
         self._t_event[record["id"]] = now
-        speed = float(np.hypot(boat.vx, boat.vy))
-        # in boat time; never more than a third of what is left of the plan
-        lead_s = min(SWAP_LEAD_S[self.policy] * max(1.0, m.world.sim_speed),
-                     float(a.path[-1, 2]) / 3.0)
+        scenario = self._problem(record, a, targets, boat, frame_velocity)
+        if scenario is None:
+            self.state = ReplanState(last_t=now)
+            return
+        m.spawn(self._plan(record, scenario, apply=action == "apply"))
+
+    def _problem(self, record: dict[str, Any], a: Assessment, targets: list[TargetState],
+                 boat: BoatState, frame_velocity: tuple[float, float]) -> Scenario | None:
+        """The re-planning problem from this assessment, starting SWAP_LEAD_S ahead (never
+        more than a third of what is left of the plan); sets the record's swap instant, or
+        fails the record (saved) and returns None."""
+        m = self.monitor
+        lead_s = min(SWAP_LEAD_S * max(1.0, m.world.sim_speed), float(a.path[-1, 2]) / 3.0)
         boat_time = m.last_row["boat_time"] if m.last_row else 0.0
         try:
-            scenario, dropped = replan_scenario(m.scenario, a, targets, speed, frame_velocity,
-                                                lead_s=lead_s, seed=len(self.replans))
+            scenario, dropped = replan_scenario(
+                m.scenario, a, targets, float(np.hypot(boat.vx, boat.vy)), frame_velocity,
+                lead_s=lead_s, seed=len(self.replans))
         except (ReplanImpossible, ValueError) as exc:
             record.update(state="failed", error=str(exc))
-            self.state = ReplanState(last_t=now)
             self._save(record)
-            return
+            return None
         record["dropped_targets"] = dropped
         # the new plan starts where the boat will be lead_s after this frame: swap there
         record["swap_at_ms"] = round((float(boat_time) + lead_s) * 1000)
         self._save(record)
-        m.spawn(self._plan(record, scenario, apply=action == "apply"))
+        return scenario
 
     async def _plan(self, record: dict[str, Any], scenario: Scenario, apply: bool) -> None:
         m = self.monitor
@@ -281,12 +295,18 @@ class ReplanService:
             raise BoatError(404, f"no re-plan {replan_id!r}")
         if record["state"] != "proposed":
             raise BoatError(409, f"re-plan {replan_id} is {record['state']}, not proposed")
+        if self.monitor.last_inputs is None or self.monitor.scenario is None:
+            raise BoatError(409, f"re-plan {replan_id}: no running mission to re-plan")
+        # the proposal was a preview: plan the same problem afresh from the latest frame,
+        # so the swap instant lies ahead of the boat, and swap that plan
         self.state = ReplanState(in_flight=True, last_t=self.state.last_t)
-        try:
-            await self._swap(record)
-        finally:
+        self._t_event[replan_id] = self.monitor.clock()
+        record["proposed_plan_id"] = record["plan_id"]
+        scenario = self._problem(record, *self.monitor.last_inputs)
+        if scenario is None:
             self.state = ReplanState(last_t=self.state.last_t)
-            self._save(record)
+            raise BoatError(409, f"re-plan {replan_id}: {record['error']}")
+        await self._plan(record, scenario, apply=True)
         if record["state"] != "applied":
             raise BoatError(409, f"re-plan {replan_id}: {record['error']}")
         return record
