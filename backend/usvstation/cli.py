@@ -108,6 +108,9 @@ def build_parser() -> argparse.ArgumentParser:
                        help="folder of offline chart packages (*.mbtiles) for the console's map")
     serve.add_argument("--sim-speed", type=float,
                        help="simulated boat time runs this many times faster (default 1)")
+    serve.add_argument("--sim-gnss-error", action=argparse.BooleanOptionalAction, default=None,
+                       help="the simulated boat's fixes carry GNSS error (default on; "
+                       "--no-sim-gnss-error reports its exact position)")
     serve.add_argument("--nmea", action="append", metavar="URL",
                        help="ship sensors, NMEA 0183 and AIS (repeatable): udp://0.0.0.0:10110, "
                        "tcp://HOST:PORT, serial:///dev/ttyUSB0?baud=38400 or a device path")
@@ -306,7 +309,8 @@ def _cmd_serve(args: argparse.Namespace) -> int:
     from usvstation.scenario import format_validation_error
 
     flags = {k: getattr(args, k) for k in ("host", "port", "link", "baud", "data_dir", "token",
-                                           "viser_port", "sim_speed", "nmea", "replan",
+                                           "viser_port", "sim_speed", "sim_gnss_error", "nmea",
+                                           "replan",
                                            "boat_id", "link_key", "insecure_link",
                                            "viewer_token", "allowed_hosts", "allowed_origins",
                                            "max_body_bytes", "max_ws_clients", "plan_timeout_s",

@@ -28,6 +28,8 @@ class Settings(BaseSettings):
     token: str | None = Field(None, description="bearer token; default: generated in data_dir")
     viser_port: int = Field(8080, ge=0, le=65535)
     sim_speed: float = Field(1.0, gt=0.0, le=100.0)
+    sim_gnss_error: bool = Field(True, description="the simulated boat's GNSS fixes carry "
+                                 "a wandering bias (0.8 m) and white error (0.4 m); off: exact")
     cors_origins: list[str] = Field(default_factory=list)
     plan_workers: int = Field(2, ge=1, le=32)
     heartbeat_timeout_s: float = Field(3.0, gt=0.0)

@@ -1,7 +1,6 @@
 """HOLD through the server keeps station in a current (issue 13), on boat time."""
 
 import math
-import statistics
 import time
 
 from stationproc import StationProcess
@@ -10,7 +9,9 @@ SIM_SPEED = "10"
 
 
 def _telemetry(c, run: int) -> list[dict]:
-    return c.get("/api/telemetry", params={"run": run, "limit": 100000}).json()
+    r = c.get("/api/telemetry", params={"run": run, "limit": 100000})
+    assert r.status_code == 200, r.text
+    return r.json()
 
 
 def _wait_boat_time(c, run: int, until: float, timeout: float) -> list[dict]:
@@ -27,14 +28,15 @@ def _wait_boat_time(c, run: int, until: float, timeout: float) -> list[dict]:
 
 def test_after_hold_the_boat_stays_within_3_m_for_60_s_in_half_a_metre_per_second(tmp_path):
     data = tmp_path / "data"
-    st = StationProcess(data, "--sim-speed", SIM_SPEED)
+    st = StationProcess(data, "--sim-speed", SIM_SPEED, "--no-sim-gnss-error")
     try:
         scenario = st.client.get("/api/scenario").json()
         scenario["environment"].update(current_speed=0.5, current_dir_deg=90.0)
         assert st.client.put("/api/scenario", json=scenario).status_code == 200
     finally:
         st.stop()
-    st = StationProcess(data, "--sim-speed", SIM_SPEED)  # the simulated sea takes the current
+    # the simulated sea takes the current
+    st = StationProcess(data, "--sim-speed", SIM_SPEED, "--no-sim-gnss-error")
     st.wait_link_up()
     try:
         c = st.client
@@ -59,16 +61,13 @@ def test_after_hold_the_boat_stays_within_3_m_for_60_s_in_half_a_metre_per_secon
         t_hold = at_hold["boat_time"]
         rows = _wait_boat_time(c, run, t_hold + 30.0 + 60.0, 120)
         assert all(x["mode"] == "HOLD" for x in rows if x["boat_time"] >= t_hold)
+        # The boat reports its exact position (--no-sim-gnss-error), so every fix is measured
+        # against where HOLD came. It was under way at about 2.7 m/s: 30 s to stop (it
+        # overshoots about 4.5 m) and come back, then 60 s within 3 m.
         window = [x for x in rows if t_hold + 30.0 <= x["boat_time"] <= t_hold + 90.0]
         assert window[-1]["boat_time"] - window[0]["boat_time"] >= 59.5
-        # Telemetry positions carry the simulated GNSS error (0.8 m wandering bias, 0.4 m
-        # white): average each second of fixes, then measure the spread about the station.
-        xs = [statistics.fmean(x["x"] for x in window[i:i + 5]) for i in range(len(window) - 4)]
-        ys = [statistics.fmean(x["y"] for x in window[i:i + 5]) for i in range(len(window) - 4)]
-        cx, cy = statistics.median(xs), statistics.median(ys)
-        # it holds where HOLD came, not somewhere down-current
-        assert math.hypot(cx - at_hold["x"], cy - at_hold["y"]) < 3.0
-        assert max(math.hypot(x - cx, y - cy) for x, y in zip(xs, ys, strict=True)) <= 3.0
+        worst = max(math.hypot(x["x"] - at_hold["x"], x["y"] - at_hold["y"]) for x in window)
+        assert worst <= 3.0, f"{worst:.2f} m from the hold point"
         assert c.get("/api/boat").json()["boat"]["state"] == "HOLD"
     finally:
         st.stop()

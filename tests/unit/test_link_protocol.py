@@ -17,6 +17,7 @@ from usvstation.link.protocol import (
     ReadbackResult,
     RttEstimator,
     StatusTextReceived,
+    TelemetryReceived,
     UploadResult,
 )
 from usvstation.sim.boat import BoatConfig
@@ -338,3 +339,24 @@ def test_replayed_frames_are_refused_by_the_running_boat():
     before = h.boat.refusals["replayed"]
     h.boat.receive_data(recorded, h.t)
     assert h.boat.refusals["replayed"] - before == len(wire.split_frames(recorded))
+
+
+def test_telemetry_overtaken_by_a_hold_report_keeps_the_state_of_its_own_instant():
+    """On a slow radio the HOLD ACK and report jump the telemetry queue; fixes taken before
+    the boat held are still labelled RUNNING (the boat's view, not the station's newest)."""
+    h = Harness(boat_cfg=BoatConfig(baud=19200, telemetry_hz=20))
+    h.connect()
+    m = make_mission(9)
+    assert _upload(h, m).ok
+    assert _command(h, "start", m).accepted
+    t_start = h.boat.executed[-1][0]
+    h.run(2.0)
+    assert _command(h, "hold").accepted
+    t_hold = h.boat.executed[-1][0]
+    h.run(2.0)
+    rows = [e.telemetry for e in h.of(TelemetryReceived)]
+    before = [r for r in rows if t_start < r.time_s < t_hold]
+    after = [r for r in rows if r.time_s >= t_hold]
+    assert len(before) > 10 and len(after) > 10
+    assert {r.state for r in before} == {"RUNNING"}
+    assert {r.state for r in after} == {"HOLD"}

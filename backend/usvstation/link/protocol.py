@@ -18,7 +18,7 @@ at the configured baud), `MissionUploader` (windowed BEGIN/ITEM/END), `Readback`
 from __future__ import annotations
 
 import random
-from collections import Counter
+from collections import Counter, deque
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -616,6 +616,10 @@ class StationProtocol:
         self.readback: Readback | None = None
         self.report: MissionState | None = None
         self.report_at = -INF
+        # Recent reports in boat time: a telemetry row is labelled with the state the boat
+        # reported for its own instant, not the newest one (an ACK and a report overtake
+        # telemetry queued behind them on a slow radio).
+        self._reports: deque[MissionState] = deque(maxlen=64)
         self.telemetry: Telemetry | None = None
         self.latest: dict[str, Any] = {}  # latest message of each type from the boat
         self.radio: Any = None  # latest RADIO_STATUS
@@ -683,7 +687,9 @@ class StationProtocol:
             if self.report is not None and rep.boot_id != self.report.boot_id:
                 events.append(BoatRebooted(self.report.boot_id, rep.boot_id))
                 self.clock_offset_s = None
+                self._reports.clear()
             self.report, self.report_at = rep, now
+            self._reports.append(rep)
             events.append(BoatReport(rep, now))
         elif kind == "GLOBAL_POSITION_INT":
             self.telemetry = self._telemetry(msg)
@@ -731,7 +737,8 @@ class StationProtocol:
         speed = hypot(vn, ve)  # current, unlike VFR_HUD (1 Hz)
         course = degrees(atan2(ve, vn)) % 360 if hypot(vn, ve) > 0.01 else \
             (gp.hdg / 100 if gp.hdg != 0xFFFF else 0.0)
-        state = self.report.state if self.report is not None else "IDLE"
+        rep = self._report_at(gp.time_boot_ms)
+        state = rep.state if rep is not None else "IDLE"
         return Telemetry(
             time_s=gp.time_boot_ms / 1000, lat=gp.lat / 1e7, lon=gp.lon / 1e7,
             speed=round(speed, 3), course_deg=round(course, 2),
@@ -745,8 +752,16 @@ class StationProtocol:
             thrust_right=thr.right_pm / 1000 if thr is not None else 0.0,
             cross_track_m=round(thr.cross_track, 3) if thr is not None else
             (nav.xtrack_error if nav is not None else 0.0),
-            waypoint_index=self.report.current_seq if self.report is not None else 0,
+            waypoint_index=rep.current_seq if rep is not None else 0,
             state=state)
+
+    def _report_at(self, time_boot_ms: int) -> MissionState | None:
+        """The boat's report in effect at its own instant `time_boot_ms`: the newest report
+        not after it (the oldest one kept when all are later)."""
+        for rep in reversed(self._reports):
+            if rep.uptime_ms <= time_boot_ms:
+                return rep
+        return self._reports[0] if self._reports else self.report
 
     def poll(self, now: float) -> list[Event]:
         self.now = now

@@ -56,7 +56,7 @@ class EmbeddedSim:
         config = BoatConfig(boat_id=s.boat_id, station_id=s.station_id,
                             telemetry_hz=s.telemetry_hz, failsafe_timeout_s=s.heartbeat_timeout_s,
                             sim_speed=s.sim_speed, baud=s.baud)
-        boat = make_boat(frame, config=config, key=self.key,
+        boat = make_boat(frame, config=config, key=self.key, gnss_error=s.sim_gnss_error,
                          vehicle=make_vehicle("dynamic", self.scenario),
                          x=self.scenario.start.x, y=self.scenario.start.y)
         self._ready.set()

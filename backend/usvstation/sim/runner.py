@@ -118,12 +118,15 @@ def save_nv(path: Path, nv: NonVolatile) -> None:
 
 def make_boat(frame: RampFrame, *, x: float = 85.0, y: float = 10.0, heading_deg: float = 180.0,
               config: BoatConfig | None = None, seed: int = 0, key: bytes | None = None,
-              vehicle: Vehicle | None = None, nv: NonVolatile | None = None) -> BoatProtocol:
+              vehicle: Vehicle | None = None, nv: NonVolatile | None = None,
+              gnss_error: bool = True) -> BoatProtocol:
     """A simulated boat at ramp-frame (x, y) with a KinematicVehicle unless one is given;
-    signing with `key` (None: unsigned, --insecure-link), its clock on the wall clock."""
+    signing with `key` (None: unsigned, --insecure-link), its clock on the wall clock;
+    `gnss_error` False: its fixes report its exact position."""
     vehicle = vehicle or KinematicVehicle(x, y, math.radians(heading_deg))
+    gps = GpsNoise(seed=seed) if gnss_error else GpsNoise(bias_std_m=0.0, white_std_m=0.0)
     return BoatProtocol(vehicle, frame, config or BoatConfig(), key=key, nv=nv,
-                        gps=GpsNoise(seed=seed), now=time.monotonic(), unix_time=time.time())
+                        gps=gps, now=time.monotonic(), unix_time=time.time())
 
 
 async def serve_on_url(boat: BoatProtocol, url: str, baud: int, *,
