@@ -35,7 +35,7 @@ serve: run
 test: setup
 	$(BIN)/python -m pytest -n 3 --dist loadscope
 
-# Unit tests only (no servers, browsers or ptys): under a minute.
+# Unit tests only (no servers, browsers, ptys, process pools or benchmarks): under a minute.
 test-fast: setup
 	$(BIN)/python -m pytest tests/unit -q -n 3
 
