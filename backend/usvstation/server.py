@@ -34,22 +34,40 @@ class StartError(Exception):
 
 
 class HeaderTimeoutProtocol(HttpToolsProtocol):
-    """uvicorn's HTTP protocol, closing a connection whose first request's headers are not
-    complete within `header_timeout_s` (half-open and slow-header connections)."""
+    """uvicorn's HTTP protocol, closing a connection whose request headers are not complete
+    within `header_timeout_s` of its opening or of the request's first byte (half-open and
+    slow-header connections, also on a kept-alive connection's later requests)."""
 
     header_timeout_s = 10.0
 
     def connection_made(self, transport: asyncio.Transport) -> None:  # type: ignore[override]
         super().connection_made(transport)
-        self._header_timer = self.loop.call_later(self.header_timeout_s, self._header_timeout)
+        self._header_timer: asyncio.TimerHandle | None = self.loop.call_later(
+            self.header_timeout_s, self._header_timeout)
+
+    def on_message_begin(self) -> None:
+        super().on_message_begin()
+        if self._header_timer is None:
+            self._header_timer = self.loop.call_later(self.header_timeout_s,
+                                                      self._header_timeout)
+
+    def on_headers_complete(self) -> None:
+        self._cancel_header_timer()
+        super().on_headers_complete()
+
+    def _cancel_header_timer(self) -> None:
+        if self._header_timer is not None:
+            self._header_timer.cancel()
+            self._header_timer = None
 
     def _header_timeout(self) -> None:
+        self._header_timer = None
         upgraded = self.transport.get_protocol() is not self  # now a websocket
-        if self.cycle is None and not upgraded and not self.transport.is_closing():
+        if not upgraded and not self.transport.is_closing():
             self.transport.close()
 
     def connection_lost(self, exc: Exception | None) -> None:
-        self._header_timer.cancel()
+        self._cancel_header_timer()
         super().connection_lost(exc)
 
 

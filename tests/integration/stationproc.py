@@ -40,6 +40,7 @@ class StationProcess(ServeProcess):
             if boat["link"]["up"] and boat["boat"] is not None and flowing:
                 return boat
             time.sleep(0.05)
+        self.stop()  # the fixture that called this never reaches its own stop()
         raise AssertionError(f"the boat link is not up after {timeout} s: {boat['link']}")
 
     def wait(self, path: str, key: str, pending: tuple, timeout: float) -> dict:
