@@ -609,7 +609,7 @@ class BoatProtocol:
         yaw = math.radians(hdg)
         yaw = yaw - 2 * math.pi if yaw > math.pi else yaw
         vn, ve = s.speed * math.cos(math.radians(cog)), s.speed * math.sin(math.radians(cog))
-        xte = -s.cross_track_error  # wire: positive left of the track
+        xte = s.cross_track_error  # positive left of the track, as on the wire
         send = self._send
         if full:  # the slower streams: once a second, with the heartbeat
             send(e.attitude_encode(t_ms, 0.0, 0.0, yaw, 0.0, 0.0, -s.yaw_rate), now,
