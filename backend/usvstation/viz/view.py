@@ -22,6 +22,7 @@ from typing import Any
 
 import numpy as np
 
+from usvstation.geometry import inflated_radius
 from usvstation.scenario import Scenario
 
 CIRCLE_SIDES = 32
@@ -258,7 +259,8 @@ class ThreeDView:
             node.remove()
         self._obstacle_nodes, self._discs = [], []
         for i, o in enumerate(self.scenario.obstacles):
-            r = self.scenario.inflated_radius(o)
+            r = inflated_radius(o.radius, self.scenario.vessel.length,
+                                self.scenario.vessel.compensation_radius)
             v, f = oblique_cylinder(o.x, o.y, r, o.vx, o.vy, self.horizon_s, self.time_scale)
             color = (230, 120, 60) if o.moving else (150, 90, 60)
             self._obstacle_nodes.append(scene.add_mesh_simple(
