@@ -16,6 +16,16 @@ from typing import Any
 import numpy as np
 
 from usvstation.geo import RampFrame
+from usvstation.geometry import (
+    cdeg_to_deg,
+    cms_to_mps,
+    deg_to_cdeg,
+    deg_to_e7,
+    e7_to_deg,
+    mps_to_cms,
+    ms_to_s,
+    s_to_ms,
+)
 from usvstation.link.wire import MAX_MISSION_ITEMS, item_crc32
 
 LAT_MAX_E7 = 90 * 10**7
@@ -38,11 +48,11 @@ class Origin:
 
     @classmethod
     def from_frame(cls, frame: RampFrame) -> Origin:
-        return cls(round(frame.lat * 1e7), round(frame.lon * 1e7),
-                   round(frame.ramp_bearing_deg % 360.0 * 100) % 36000)
+        return cls(deg_to_e7(frame.lat), deg_to_e7(frame.lon), deg_to_cdeg(frame.ramp_bearing_deg))
 
     def to_frame(self) -> RampFrame:
-        return RampFrame(self.lat_e7 / 1e7, self.lon_e7 / 1e7, self.ramp_bearing_cdeg / 100)
+        return RampFrame(e7_to_deg(self.lat_e7), e7_to_deg(self.lon_e7),
+                         cdeg_to_deg(self.ramp_bearing_cdeg))
 
 
 @dataclass(frozen=True)
@@ -163,8 +173,8 @@ def mission_from_plan(waypoints: Sequence[Mapping[str, Any]], frame: RampFrame,
     compass_heading = np.atleast_1d(frame.heading_to_compass_deg(heading_deg))
     compass_course = np.atleast_1d(frame.heading_to_compass_deg(course))
     items = tuple(
-        MissionItem(mission_id, i, round(la * 1e7), round(lo * 1e7), round(tt * 1000),
-                    round(sp * 100), round(cc * 100) % 36000, round(hd * 100) % 36000)
+        MissionItem(mission_id, i, deg_to_e7(la), deg_to_e7(lo), s_to_ms(tt),
+                    mps_to_cms(sp), deg_to_cdeg(cc), deg_to_cdeg(hd))
         for i, (la, lo, tt, sp, cc, hd) in enumerate(
             zip(np.atleast_1d(lat), np.atleast_1d(lon), t, speed, compass_course,
                 compass_heading, strict=True))
@@ -178,20 +188,20 @@ def plan_from_mission(mission: Mission, frame: RampFrame | None = None) -> list[
         if mission.origin is None:
             raise MissionError("plan_from_mission needs a frame for a mission without origin")
         frame = mission.origin.to_frame()
-    lat = np.array([it.lat / 1e7 for it in mission.items])
-    lon = np.array([it.lon / 1e7 for it in mission.items])
+    lat = e7_to_deg(np.array([it.lat for it in mission.items]))
+    lon = e7_to_deg(np.array([it.lon for it in mission.items]))
     x, y = frame.to_ramp(lat, lon)
-    heading = frame.compass_to_heading_deg([it.heading_cdeg / 100 for it in mission.items])
+    heading = frame.compass_to_heading_deg(cdeg_to_deg([it.heading_cdeg for it in mission.items]))
     return [
-        {"x": float(x[i]), "y": float(y[i]), "t": it.t_ms / 1000, "speed": it.speed_cms / 100,
-         "heading_deg": float(heading[i])}
+        {"x": float(x[i]), "y": float(y[i]), "t": ms_to_s(it.t_ms),
+         "speed": cms_to_mps(it.speed_cms), "heading_deg": float(heading[i])}
         for i, it in enumerate(mission.items)
     ]
 
 
 def distance_m(lat_e7: int, lon_e7: int, lat2_e7: int, lon2_e7: int) -> float:
     """Great-circle distance between two wire positions (haversine, WGS-84 mean radius)."""
-    p1, p2 = math.radians(lat_e7 / 1e7), math.radians(lat2_e7 / 1e7)
-    dp, dl = p2 - p1, math.radians((lon2_e7 - lon_e7) / 1e7)
+    p1, p2 = math.radians(e7_to_deg(lat_e7)), math.radians(e7_to_deg(lat2_e7))
+    dp, dl = p2 - p1, math.radians(e7_to_deg(lon2_e7 - lon_e7))
     a = math.sin(dp / 2) ** 2 + math.cos(p1) * math.cos(p2) * math.sin(dl / 2) ** 2
     return 2 * 6371008.8 * math.asin(min(1.0, math.sqrt(a)))
