@@ -30,10 +30,12 @@ def wrap_angle(angle: Scalar) -> float: ...
 @overload
 def wrap_angle(angle: ArrayLike) -> np.ndarray: ...
 def wrap_angle(angle: ArrayLike) -> float | np.ndarray:
-    """Radians wrapped to [-pi, pi)."""
+    """Radians wrapped to [-pi, pi) (a tiny negative remainder rounds up to 2 pi: kept in)."""
     if _scalar(angle):
-        return (angle + math.pi) % TWO_PI - math.pi
-    return np.mod(np.asarray(angle, dtype=float) + math.pi, TWO_PI) - math.pi
+        w = (angle + math.pi) % TWO_PI - math.pi
+        return -math.pi if w >= math.pi else w
+    w = np.mod(np.asarray(angle, dtype=float) + math.pi, TWO_PI) - math.pi
+    return np.where(w >= math.pi, -math.pi, w)
 
 
 @overload
@@ -53,10 +55,12 @@ def wrap_deg(angle_deg: Scalar) -> float: ...
 @overload
 def wrap_deg(angle_deg: ArrayLike) -> np.ndarray: ...
 def wrap_deg(angle_deg: ArrayLike) -> float | np.ndarray:
-    """Degrees wrapped to [0, 360) (a compass bearing)."""
+    """Degrees wrapped to [0, 360) (a compass bearing; -1e-20 gives 0, not 360)."""
     if _scalar(angle_deg):
-        return angle_deg % 360.0
-    return np.mod(np.asarray(angle_deg, dtype=float), 360.0)
+        w = angle_deg % 360.0
+        return 0.0 if w == 360.0 else w
+    w = np.mod(np.asarray(angle_deg, dtype=float), 360.0)
+    return np.where(w == 360.0, 0.0, w)
 
 
 @overload
