@@ -10,14 +10,12 @@ NumPy, so every layer may use it.
 from __future__ import annotations
 
 import math
-from typing import overload
+from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike
 
 TWO_PI = 2.0 * math.pi
-
-Scalar = float | int
 
 
 def _scalar(a: object) -> bool:
@@ -25,55 +23,39 @@ def _scalar(a: object) -> bool:
 
 
 # --- angles ---------------------------------------------------------------------------------
-@overload
-def wrap_angle(angle: Scalar) -> float: ...
-@overload
-def wrap_angle(angle: ArrayLike) -> np.ndarray: ...
+def _wrap(a: ArrayLike, low: float, period: float) -> float | np.ndarray:
+    """`a` wrapped to [low, low + period); a tiny negative remainder (it rounds to `period`)
+    goes to `low`."""
+    if _scalar(a):
+        w = (a - low) % period + low
+        return low if w >= low + period else w
+    w = np.mod(np.asarray(a, dtype=float) - low, period) + low
+    return np.where(w >= low + period, low, w)
+
+
 def wrap_angle(angle: ArrayLike) -> float | np.ndarray:
-    """Radians wrapped to [-pi, pi) (a tiny negative remainder rounds up to 2 pi: kept in)."""
-    if _scalar(angle):
-        w = (angle + math.pi) % TWO_PI - math.pi
-        return -math.pi if w >= math.pi else w
-    w = np.mod(np.asarray(angle, dtype=float) + math.pi, TWO_PI) - math.pi
-    return np.where(w >= math.pi, -math.pi, w)
+    """Radians wrapped to [-pi, pi)."""
+    return _wrap(angle, -math.pi, TWO_PI)
 
 
-@overload
-def angle_diff(a: Scalar, b: Scalar) -> float: ...
-@overload
-def angle_diff(a: ArrayLike, b: ArrayLike) -> np.ndarray: ...
 def angle_diff(a: ArrayLike, b: ArrayLike) -> float | np.ndarray:
     """Smallest signed angle a - b in [-pi, pi), radians; positive when a is anticlockwise
     of b. Antisymmetric except at exactly +-pi."""
-    if _scalar(a) and _scalar(b):
-        return wrap_angle(a - b)
-    return wrap_angle(np.asarray(a, dtype=float) - np.asarray(b, dtype=float))
+    both = _scalar(a) and _scalar(b)
+    return wrap_angle(a - b if both else np.subtract(a, b, dtype=float))
 
 
-@overload
-def wrap_deg(angle_deg: Scalar) -> float: ...
-@overload
-def wrap_deg(angle_deg: ArrayLike) -> np.ndarray: ...
 def wrap_deg(angle_deg: ArrayLike) -> float | np.ndarray:
-    """Degrees wrapped to [0, 360) (a compass bearing; -1e-20 gives 0, not 360)."""
-    if _scalar(angle_deg):
-        w = angle_deg % 360.0
-        return 0.0 if w == 360.0 else w
-    w = np.mod(np.asarray(angle_deg, dtype=float), 360.0)
-    return np.where(w == 360.0, 0.0, w)
+    """Degrees wrapped to [0, 360) (a compass bearing)."""
+    return _wrap(angle_deg, 0.0, 360.0)
 
 
-@overload
-def wrap_180(angle_deg: Scalar) -> float: ...
-@overload
-def wrap_180(angle_deg: ArrayLike) -> np.ndarray: ...
 def wrap_180(angle_deg: ArrayLike) -> float | np.ndarray:
-    """Degrees wrapped to (-180, 180] (a relative bearing: positive clockwise on a compass)."""
-    if _scalar(angle_deg):
-        r = (angle_deg + 180.0) % 360.0 - 180.0
-        return 180.0 if r == -180.0 else r
-    r = np.mod(np.asarray(angle_deg, dtype=float) + 180.0, 360.0) - 180.0
-    return np.where(r == -180.0, 180.0, r)
+    """Degrees wrapped to (-180, 180] (a relative bearing, positive clockwise on a compass)."""
+    r = _wrap(angle_deg, -180.0, 360.0)
+    if isinstance(r, np.ndarray):
+        return np.where(r == -180.0, 180.0, r)
+    return 180.0 if r == -180.0 else r
 
 
 # --- paths ------------------------------------------------------------------------------------
@@ -91,92 +73,47 @@ def cross_track_error(px: float, py: float, ax: float, ay: float, bx: float, by:
     return (dx * (py - ay) - dy * (px - ax)) / length
 
 
-@overload
-def position_at(times: ArrayLike, xs: ArrayLike, ys: ArrayLike,
-                t: Scalar) -> tuple[float, float]: ...
-@overload
-def position_at(times: ArrayLike, xs: ArrayLike, ys: ArrayLike,
-                t: ArrayLike) -> tuple[np.ndarray, np.ndarray]: ...
 def position_at(times: ArrayLike, xs: ArrayLike, ys: ArrayLike, t: ArrayLike
                 ) -> tuple[float, float] | tuple[np.ndarray, np.ndarray]:
-    """Position on a timed path (waypoints (x_i, y_i) reached at times t_i, increasing):
-    linear in time between waypoints (paper 000 eq. 9), held at the ends outside them."""
-    x = np.interp(t, times, xs)
-    y = np.interp(t, times, ys)
-    if _scalar(t):
-        return float(x), float(y)
-    return x, y
+    """Position on a timed path (waypoints (x_i, y_i) reached at increasing times t_i): linear
+    in time between waypoints (paper 000 eq. 9), held at the ends. Floats for a scalar t."""
+    x, y = np.interp(t, times, xs), np.interp(t, times, ys)
+    return (float(x), float(y)) if _scalar(t) else (x, y)
 
 
 # --- obstacles --------------------------------------------------------------------------------
-@overload
-def inflated_radius(r_obs: Scalar, hull_length: float, r_c: float) -> float: ...
-@overload
-def inflated_radius(r_obs: ArrayLike, hull_length: float, r_c: float) -> np.ndarray: ...
 def inflated_radius(r_obs: ArrayLike, hull_length: float, r_c: float) -> float | np.ndarray:
     """R_l = R_obs + D_USV + R_c (paper 000 eq. 7): the obstacle radius grown by the hull
     length D_USV and the compensation radius R_c (drift; the paper takes 1 m)."""
-    if _scalar(r_obs):
-        return r_obs + hull_length + r_c
-    return np.asarray(r_obs, dtype=float) + hull_length + r_c
+    r = r_obs if _scalar(r_obs) else np.asarray(r_obs, dtype=float)
+    return r + hull_length + r_c
 
 
 # --- link units (MAVLink integer fields) -------------------------------------------------------
-@overload
-def _rounded(value: Scalar, scale: float) -> int: ...
-@overload
-def _rounded(value: ArrayLike, scale: float) -> np.ndarray: ...
-def _rounded(value: ArrayLike, scale: float) -> int | np.ndarray:
-    if _scalar(value):
-        return round(value * scale)
-    return np.rint(np.asarray(value, dtype=float) * scale).astype(np.int64)
+@dataclass(frozen=True)
+class WireUnit:
+    """A value in SI units (degrees for angles) <-> the wire's integer round(value * scale),
+    rounded half to even; `turn` wraps a compass angle into 0..turn-1."""
+
+    scale: float
+    turn: int | None = None
+
+    def to_wire(self, value: ArrayLike) -> int | np.ndarray:
+        """The wire integer(s) of `value` (an int for a scalar, an int64 array otherwise)."""
+        if self.turn is not None:
+            value = wrap_deg(value)
+        if _scalar(value):
+            n = round(value * self.scale)
+        else:
+            n = np.rint(np.asarray(value, dtype=float) * self.scale).astype(np.int64)
+        return n if self.turn is None else n % self.turn
+
+    def from_wire(self, n: ArrayLike) -> float | np.ndarray:
+        """The value of wire integer(s) `n`."""
+        return n / self.scale if _scalar(n) else np.asarray(n) / self.scale
 
 
-@overload
-def _scaled(value: Scalar, scale: float) -> float: ...
-@overload
-def _scaled(value: ArrayLike, scale: float) -> np.ndarray: ...
-def _scaled(value: ArrayLike, scale: float) -> float | np.ndarray:
-    if _scalar(value):
-        return value / scale
-    return np.asarray(value, dtype=float) / scale
-
-
-def deg_to_e7(deg: ArrayLike) -> int | np.ndarray:
-    """Degrees to the wire's 1e-7 degree integers (lat/lon), rounded half to even."""
-    return _rounded(deg, 1e7)
-
-
-def e7_to_deg(e7: ArrayLike) -> float | np.ndarray:
-    """1e-7 degree integers to degrees."""
-    return _scaled(e7, 1e7)
-
-
-def deg_to_cdeg(deg: ArrayLike) -> int | np.ndarray:
-    """A compass angle in degrees to the wire's centidegrees 0..35999."""
-    return _rounded(wrap_deg(deg), 100.0) % 36000
-
-
-def cdeg_to_deg(cdeg: ArrayLike) -> float | np.ndarray:
-    """Centidegrees to degrees."""
-    return _scaled(cdeg, 100.0)
-
-
-def mps_to_cms(speed: ArrayLike) -> int | np.ndarray:
-    """m/s to the wire's cm/s integers."""
-    return _rounded(speed, 100.0)
-
-
-def cms_to_mps(cms: ArrayLike) -> float | np.ndarray:
-    """cm/s to m/s."""
-    return _scaled(cms, 100.0)
-
-
-def s_to_ms(seconds: ArrayLike) -> int | np.ndarray:
-    """Seconds to the wire's millisecond integers."""
-    return _rounded(seconds, 1000.0)
-
-
-def ms_to_s(ms: ArrayLike) -> float | np.ndarray:
-    """Milliseconds to seconds."""
-    return _scaled(ms, 1000.0)
+E7 = WireUnit(1e7)  # degrees <-> 1e-7 degrees (latitude, longitude)
+CDEG = WireUnit(100.0, turn=36000)  # compass degrees <-> centidegrees 0..35999
+CM = WireUnit(100.0)  # m or m/s <-> cm or cm/s
+MS = WireUnit(1000.0)  # s <-> ms

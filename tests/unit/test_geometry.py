@@ -8,18 +8,14 @@ from hypothesis import assume, given
 from hypothesis import strategies as st
 
 from usvstation.geometry import (
+    CDEG,
+    CM,
+    E7,
+    MS,
     angle_diff,
-    cdeg_to_deg,
-    cms_to_mps,
     cross_track_error,
-    deg_to_cdeg,
-    deg_to_e7,
-    e7_to_deg,
     inflated_radius,
-    mps_to_cms,
-    ms_to_s,
     position_at,
-    s_to_ms,
     wrap_180,
     wrap_angle,
     wrap_deg,
@@ -167,38 +163,38 @@ def test_position_at_on_a_hand_made_plan() -> None:
 # --- link units -------------------------------------------------------------------------------
 @given(st.floats(-90.0, 90.0))
 def test_degrees_e7_round_trip(a) -> None:
-    n = deg_to_e7(a)
-    assert isinstance(n, int) and abs(e7_to_deg(n) - a) <= 0.5e-7 + 1e-12
-    assert deg_to_e7(e7_to_deg(n)) == n
+    n = E7.to_wire(a)
+    assert isinstance(n, int) and abs(E7.from_wire(n) - a) <= 0.5e-7 + 1e-12
+    assert E7.to_wire(E7.from_wire(n)) == n
 
 
 @given(st.lists(st.integers(-1_800_000_000, 1_800_000_000), min_size=1, max_size=10))
 def test_e7_arrays_round_trip_exactly(ns) -> None:
-    assert deg_to_e7(e7_to_deg(np.array(ns))).tolist() == ns
-    assert e7_to_deg(np.array(ns)).tolist() == [e7_to_deg(n) for n in ns]
+    assert E7.to_wire(E7.from_wire(np.array(ns))).tolist() == ns
+    assert E7.from_wire(np.array(ns)).tolist() == [E7.from_wire(n) for n in ns]
 
 
 @given(st.integers(0, 35999))
 def test_centidegrees_round_trip(c) -> None:
-    assert deg_to_cdeg(cdeg_to_deg(c)) == c
+    assert CDEG.to_wire(CDEG.from_wire(c)) == c
 
 
 @given(deg)
 def test_centidegrees_are_a_compass_angle(a) -> None:
-    c = deg_to_cdeg(a)
+    c = CDEG.to_wire(a)
     assert 0 <= c < 36000
-    assert abs(wrap_180(cdeg_to_deg(c) - a)) <= 0.005 + 1e-6
+    assert abs(wrap_180(CDEG.from_wire(c) - a)) <= 0.005 + 1e-6
 
 
 @given(st.integers(0, 0xFFFF), st.integers(0, 0xFFFFFFFF))
 def test_speed_and_time_round_trip(cms, ms) -> None:
-    assert mps_to_cms(cms_to_mps(cms)) == cms
-    assert s_to_ms(ms_to_s(ms)) == ms
-    assert s_to_ms(np.array([ms_to_s(ms)])).tolist() == [ms]
+    assert CM.to_wire(CM.from_wire(cms)) == cms
+    assert MS.to_wire(MS.from_wire(ms)) == ms
+    assert MS.to_wire(np.array([MS.from_wire(ms)])).tolist() == [ms]
 
 
 def test_units_on_hand_made_values() -> None:
-    assert (deg_to_e7(47.3977419), e7_to_deg(473977419)) == (473977419, 47.3977419)
-    assert (deg_to_cdeg(-0.5), deg_to_cdeg(359.996), cdeg_to_deg(9000)) == (35950, 0, 90.0)
-    assert (mps_to_cms(1.234), cms_to_mps(250), s_to_ms(1.5), ms_to_s(2500)) == \
+    assert (E7.to_wire(47.3977419), E7.from_wire(473977419)) == (473977419, 47.3977419)
+    assert (CDEG.to_wire(-0.5), CDEG.to_wire(359.996), CDEG.from_wire(9000)) == (35950, 0, 90.0)
+    assert (CM.to_wire(1.234), CM.from_wire(250), MS.to_wire(1.5), MS.from_wire(2500)) == \
         (123, 2.5, 1500, 2.5)

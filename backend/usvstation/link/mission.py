@@ -16,16 +16,7 @@ from typing import Any
 import numpy as np
 
 from usvstation.geo import RampFrame
-from usvstation.geometry import (
-    cdeg_to_deg,
-    cms_to_mps,
-    deg_to_cdeg,
-    deg_to_e7,
-    e7_to_deg,
-    mps_to_cms,
-    ms_to_s,
-    s_to_ms,
-)
+from usvstation.geometry import CDEG, CM, E7, MS
 from usvstation.link.wire import MAX_MISSION_ITEMS, item_crc32
 
 LAT_MAX_E7 = 90 * 10**7
@@ -48,11 +39,12 @@ class Origin:
 
     @classmethod
     def from_frame(cls, frame: RampFrame) -> Origin:
-        return cls(deg_to_e7(frame.lat), deg_to_e7(frame.lon), deg_to_cdeg(frame.ramp_bearing_deg))
+        return cls(E7.to_wire(frame.lat), E7.to_wire(frame.lon),
+                   CDEG.to_wire(frame.ramp_bearing_deg))
 
     def to_frame(self) -> RampFrame:
-        return RampFrame(e7_to_deg(self.lat_e7), e7_to_deg(self.lon_e7),
-                         cdeg_to_deg(self.ramp_bearing_cdeg))
+        return RampFrame(E7.from_wire(self.lat_e7), E7.from_wire(self.lon_e7),
+                         CDEG.from_wire(self.ramp_bearing_cdeg))
 
 
 @dataclass(frozen=True)
@@ -173,8 +165,8 @@ def mission_from_plan(waypoints: Sequence[Mapping[str, Any]], frame: RampFrame,
     compass_heading = np.atleast_1d(frame.heading_to_compass_deg(heading_deg))
     compass_course = np.atleast_1d(frame.heading_to_compass_deg(course))
     items = tuple(
-        MissionItem(mission_id, i, deg_to_e7(la), deg_to_e7(lo), s_to_ms(tt),
-                    mps_to_cms(sp), deg_to_cdeg(cc), deg_to_cdeg(hd))
+        MissionItem(mission_id, i, E7.to_wire(la), E7.to_wire(lo), MS.to_wire(tt),
+                    CM.to_wire(sp), CDEG.to_wire(cc), CDEG.to_wire(hd))
         for i, (la, lo, tt, sp, cc, hd) in enumerate(
             zip(np.atleast_1d(lat), np.atleast_1d(lon), t, speed, compass_course,
                 compass_heading, strict=True))
@@ -188,20 +180,21 @@ def plan_from_mission(mission: Mission, frame: RampFrame | None = None) -> list[
         if mission.origin is None:
             raise MissionError("plan_from_mission needs a frame for a mission without origin")
         frame = mission.origin.to_frame()
-    lat = e7_to_deg(np.array([it.lat for it in mission.items]))
-    lon = e7_to_deg(np.array([it.lon for it in mission.items]))
+    lat = E7.from_wire(np.array([it.lat for it in mission.items]))
+    lon = E7.from_wire(np.array([it.lon for it in mission.items]))
     x, y = frame.to_ramp(lat, lon)
-    heading = frame.compass_to_heading_deg(cdeg_to_deg([it.heading_cdeg for it in mission.items]))
+    cdeg = [it.heading_cdeg for it in mission.items]
+    heading = frame.compass_to_heading_deg(CDEG.from_wire(cdeg))
     return [
-        {"x": float(x[i]), "y": float(y[i]), "t": ms_to_s(it.t_ms),
-         "speed": cms_to_mps(it.speed_cms), "heading_deg": float(heading[i])}
+        {"x": float(x[i]), "y": float(y[i]), "t": MS.from_wire(it.t_ms),
+         "speed": CM.from_wire(it.speed_cms), "heading_deg": float(heading[i])}
         for i, it in enumerate(mission.items)
     ]
 
 
 def distance_m(lat_e7: int, lon_e7: int, lat2_e7: int, lon2_e7: int) -> float:
     """Great-circle distance between two wire positions (haversine, WGS-84 mean radius)."""
-    p1, p2 = math.radians(e7_to_deg(lat_e7)), math.radians(e7_to_deg(lat2_e7))
-    dp, dl = p2 - p1, math.radians(e7_to_deg(lon2_e7 - lon_e7))
+    p1, p2 = math.radians(E7.from_wire(lat_e7)), math.radians(E7.from_wire(lat2_e7))
+    dp, dl = p2 - p1, math.radians(E7.from_wire(lon2_e7 - lon_e7))
     a = math.sin(dp / 2) ** 2 + math.cos(p1) * math.cos(p2) * math.sin(dl / 2) ** 2
     return 2 * 6371008.8 * math.asin(min(1.0, math.sqrt(a)))

@@ -20,7 +20,7 @@ import time
 from collections.abc import AsyncIterator, Awaitable, Callable
 from typing import Any
 
-from usvstation.geometry import deg_to_cdeg, mps_to_cms, s_to_ms
+from usvstation.geometry import CDEG, CM, MS
 from usvstation.link.mission import Mission
 from usvstation.link.protocol import (
     CommandOutcome,
@@ -222,8 +222,8 @@ class BoatLink:
     async def guide(self, heading_deg: float, speed: float, valid_s: float) -> None:
         """Shore-assisted setpoint: compass heading (deg), speed (m/s), for valid_s seconds."""
         try:
-            self.protocol.send_guidance(deg_to_cdeg(heading_deg), mps_to_cms(speed),
-                                        s_to_ms(valid_s))
+            self.protocol.send_guidance(CDEG.to_wire(heading_deg), CM.to_wire(speed),
+                                        MS.to_wire(valid_s))
         except RuntimeError as exc:
             raise LinkError(str(exc)) from None
         await self._flush()

@@ -24,15 +24,7 @@ from typing import Any
 import numpy as np
 
 from usvstation.geo import RampFrame
-from usvstation.geometry import (
-    cdeg_to_deg,
-    cms_to_mps,
-    deg_to_cdeg,
-    deg_to_e7,
-    e7_to_deg,
-    mps_to_cms,
-    ms_to_s,
-)
+from usvstation.geometry import CDEG, CM, E7, MS
 from usvstation.link import wire
 from usvstation.link.mavlink import usv_recovery as mav
 from usvstation.link.mission import (
@@ -352,7 +344,7 @@ class BoatProtocol:
     def _distance_to(self, it: MissionItem) -> float:
         s = self.vehicle.state
         lat, lon = self.frame.to_geodetic(s.x, s.y)
-        return distance_m(deg_to_e7(float(lat)), deg_to_e7(float(lon)), it.lat, it.lon)
+        return distance_m(E7.to_wire(float(lat)), E7.to_wire(float(lon)), it.lat, it.lon)
 
     def _mission_ack(self, mission_id: int, seq: int, result: int, stage: int,
                      now: float) -> None:
@@ -479,10 +471,10 @@ class BoatProtocol:
     def _on_guidance(self, g: Any, now: float) -> None:
         if self.state != S_RUNNING or g.valid_ms == 0:
             return
-        compass = cdeg_to_deg(g.heading_cdeg)
+        compass = CDEG.from_wire(g.heading_cdeg)
         heading = math.radians(float(self.frame.compass_to_heading_deg(compass)))
-        self.vehicle.set_guidance(heading, cms_to_mps(g.speed_cms))
-        self.guided_until = now + ms_to_s(g.valid_ms)
+        self.vehicle.set_guidance(heading, CM.from_wire(g.speed_cms))
+        self.guided_until = now + MS.from_wire(g.valid_ms)
 
     def _clear_guidance(self) -> None:
         if self.guided_until is not None:
@@ -491,13 +483,14 @@ class BoatProtocol:
 
     def _waypoints(self, items: tuple[MissionItem, ...]) -> list[Waypoint]:
         """Wire items (geodetic) to the vehicle's world frame (the sim's ramp frame)."""
-        lat = e7_to_deg(np.array([it.lat for it in items]))
-        lon = e7_to_deg(np.array([it.lon for it in items]))
+        lat = E7.from_wire(np.array([it.lat for it in items]))
+        lon = E7.from_wire(np.array([it.lon for it in items]))
         x, y = self.frame.to_ramp(lat, lon)
         heading = np.radians(self.frame.compass_to_heading_deg(
-            cdeg_to_deg(np.array([it.heading_cdeg for it in items]))))
-        return [Waypoint(float(x[i]), float(y[i]), ms_to_s(it.t_ms), cms_to_mps(it.speed_cms),
-                         float(heading[i])) for i, it in enumerate(items)]
+            CDEG.from_wire(np.array([it.heading_cdeg for it in items]))))
+        return [Waypoint(float(x[i]), float(y[i]), MS.from_wire(it.t_ms),
+                         CM.from_wire(it.speed_cms), float(heading[i]))
+                for i, it in enumerate(items)]
 
     # ---- time
     def update(self, now: float) -> None:
@@ -513,7 +506,7 @@ class BoatProtocol:
         target = self.boat_time + dt_link * self.cfg.sim_speed
         while True:  # each timer at its own boat-time instant, in order
             st = self.staging
-            swap_t = ms_to_s(st.swap_at_ms) if st is not None and st.state == ST_VERIFIED \
+            swap_t = MS.from_wire(st.swap_at_ms) if st is not None and st.state == ST_VERIFIED \
                 and st.swap_at_ms else math.inf
             due = min(swap_t, self.next_heartbeat, self.next_telemetry)
             if due > target:
@@ -593,7 +586,7 @@ class BoatProtocol:
         boat_next = min(self.next_telemetry, self.next_heartbeat)
         st = self.staging
         if st is not None and st.state == ST_VERIFIED and st.swap_at_ms:
-            boat_next = min(boat_next, ms_to_s(st.swap_at_ms))
+            boat_next = min(boat_next, MS.from_wire(st.swap_at_ms))
         d = self.last_now + max(0.0, boat_next - self.boat_time) / speed
         if self.linked:
             d = min(d, self.last_rx + self.cfg.failsafe_timeout_s + 1e-3)
@@ -611,7 +604,7 @@ class BoatProtocol:
         e = self.codec.mav
         dx, dy = self.gps.sample(1.0 / self.cfg.telemetry_hz)
         lat, lon = self.frame.to_geodetic(s.x + dx, s.y + dy)
-        lat_e7, lon_e7 = deg_to_e7(float(lat)), deg_to_e7(float(lon))
+        lat_e7, lon_e7 = E7.to_wire(float(lat)), E7.to_wire(float(lon))
         compass = self.frame.heading_to_compass_deg
         cog = float(compass(math.degrees(s.course))) % 360
         hdg = float(compass(math.degrees(s.heading))) % 360
@@ -627,7 +620,7 @@ class BoatProtocol:
             send(e.gps_raw_int_encode(
                 int(self.boat_time * 1e6), self.gps.fix_type, lat_e7, lon_e7, 0,
                 _clamp(round(self.gps.hdop * 100), 0, 0xFFFE), 0xFFFF,
-                _clamp(mps_to_cms(s.speed), 0, 0xFFFE), deg_to_cdeg(cog),
+                _clamp(CM.to_wire(s.speed), 0, 0xFFFE), CDEG.to_wire(cog),
                 self.gps.satellites), now, telemetry=True)
             throttle = _clamp(round(50 * (abs(s.thrust_left) + abs(s.thrust_right))), 0, 100)
             send(e.vfr_hud_encode(s.speed, s.speed, round(hdg) % 360, throttle, 0.0, 0.0), now,
@@ -638,9 +631,9 @@ class BoatProtocol:
                                  _clamp(round(s.thrust_right * 1000), -1000, 1000), xte, 0.0),
              now, telemetry=True)
         send(e.global_position_int_encode(t_ms, lat_e7, lon_e7, 0, 0,
-                                          _clamp(mps_to_cms(vn), -32768, 32767),
-                                          _clamp(mps_to_cms(ve), -32768, 32767), 0,
-                                          deg_to_cdeg(hdg)), now, telemetry=True)
+                                          _clamp(CM.to_wire(vn), -32768, 32767),
+                                          _clamp(CM.to_wire(ve), -32768, 32767), 0,
+                                          CDEG.to_wire(hdg)), now, telemetry=True)
 
 
 _FROM_STATION = {
