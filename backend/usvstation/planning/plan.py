@@ -114,7 +114,7 @@ def clearance_margins(scenario: Scenario, fallback: bool) -> list[tuple[float, s
     than eq. 7's margin says so in its warnings and `metrics.margin_kept`.
     """
     v = scenario.vessel
-    full = v.length + v.compensation_radius
+    full = inflated_radius(0.0, v.length, v.compensation_radius)  # eq. 7's margin
     levels: list[tuple[float, str | None]] = [(full, None)]
     if fallback:
         least = v.length / 2.0 + MIN_WATER_M
