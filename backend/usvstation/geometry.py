@@ -63,8 +63,9 @@ def cross_track_error(px: float, py: float, ax: float, ay: float, bx: float, by:
     """Signed distance (m) of P from the line A->B: POSITIVE LEFT of the direction of travel.
 
     The one sign convention of the station: the ramp frame's +y is to the left, and the
-    wire's USV_THRUST.cross_track is positive left (protocol/usv_recovery.xml). A degenerate
-    segment (A = B) gives the unsigned distance |P - A|.
+    wire's USV_THRUST.cross_track is positive left (protocol/usv_recovery.xml). Only the
+    telemetry record (API, store, console) shows it positive right (docs/api.md), negated at
+    that edge. A degenerate segment (A = B) gives the unsigned distance |P - A|.
     """
     dx, dy = bx - ax, by - ay
     length = math.hypot(dx, dy)
