@@ -189,6 +189,7 @@ def test_api_docs_are_served_from_the_station_itself(station):
     for page in ("/docs", "/redoc"):
         r = c.get(page)
         assert r.status_code == 200
+        assert r.headers["content-security-policy"].startswith("default-src 'self'")
         links = re.findall(r'(?:src|href|spec-url|url:\s*)=?\s*["\']([^"\']+)["\']', r.text)
         assert links and all(link.startswith("/") for link in links), links
         for link in links:
