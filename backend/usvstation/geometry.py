@@ -30,7 +30,8 @@ def _wrap(a: ArrayLike, low: float, period: float) -> float | np.ndarray:
         w = (a - low) % period + low
         return low if w >= low + period else w
     w = np.mod(np.asarray(a, dtype=float) - low, period) + low
-    return np.where(w >= low + period, low, w)
+    w = np.where(w >= low + period, low, w)
+    return w[()] if w.ndim == 0 else w  # a 0-d array gives a NumPy scalar, as np.mod does
 
 
 def wrap_angle(angle: ArrayLike) -> float | np.ndarray:
@@ -55,7 +56,7 @@ def wrap_180(angle_deg: ArrayLike) -> float | np.ndarray:
     r = _wrap(angle_deg, -180.0, 360.0)
     if isinstance(r, np.ndarray):
         return np.where(r == -180.0, 180.0, r)
-    return 180.0 if r == -180.0 else r
+    return 180.0 if r == -180.0 else r  # a float or a NumPy scalar
 
 
 # --- paths ------------------------------------------------------------------------------------
