@@ -51,6 +51,11 @@ class PathBatch:
     def __len__(self) -> int:
         return int(self.x.shape[0])
 
+    def rows(self, sel: slice) -> PathBatch:
+        """The paths of rows `sel`."""
+        return PathBatch(*(getattr(self, f)[sel] for f in (
+            "x", "y", "v", "t", "seg_len", "seg_dt", "seg_dx", "seg_dy")))
+
 
 def timed_paths(x: np.ndarray, y: np.ndarray, v: np.ndarray) -> PathBatch:
     """Waypoints (P, N) with eq. 11 segment times dT = 2 L / (v_i + v_i+1) (speeds > 0)."""

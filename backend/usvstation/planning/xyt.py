@@ -172,3 +172,114 @@ def closest_approach(
         s = np.where(dd > 0.0, -(ex * dx + ey * dy) / dd, 0.0)
     s = np.clip(s, 0.0, 1.0)
     return np.hypot(ex + s * dx, ey + s * dy)
+
+
+PAIR_CHUNK = 1 << 17  # (segment, obstacle) pairs per NumPy pass: about 1 MB per temporary
+
+
+@dataclass(frozen=True)
+class _SortedClass:
+    """Obstacles of similar reach, sorted by their centre's y at t = 0."""
+
+    order: np.ndarray  # indices into the index's obstacles, by increasing cy
+    key: np.ndarray  # cy[order]
+    reach: float  # largest radius of the class, m
+    drift: float  # largest |vy| of the class, m/s
+
+
+class SweepIndex:
+    """Sweep-and-prune of straight timed segments against circles along y (issue 12, scale).
+
+    The circles are sorted by y in a few classes of similar radius and y
+    speed; a segment is paired only with the circles whose y, over the
+    segment's time window, can come within a radius of the y the segment
+    spans, and a pair is tested exactly (eq. 9) only if the circle's x-range
+    over that window also overlaps the segment's. Pruning is conservative:
+    no hit is ever dropped, so the result equals the all-pairs test while
+    the cost grows with the obstacles near each segment. Memory is bounded
+    by `PAIR_CHUNK` pairs per pass.
+    """
+
+    def __init__(self, cx: np.ndarray, cy: np.ndarray, vx: np.ndarray, vy: np.ndarray,
+                 r: np.ndarray) -> None:
+        self.cx, self.cy, self.vx, self.vy, self.r = (
+            np.ascontiguousarray(a, dtype=float).reshape(-1) for a in (cx, cy, vx, vy, r))
+        n = self.r.shape[0]
+        # class = (power-of-two bucket of the radius, power-of-two bucket of |vy|)
+        rb = np.floor(np.log2(np.maximum(self.r, 1e-3))).astype(np.int64)
+        avy = np.abs(self.vy)
+        vb = np.where(avy > 0.0, np.floor(np.log2(np.maximum(avy, 1e-6))).astype(np.int64) + 64,
+                      0)
+        label = rb * 256 + vb
+        classes = []
+        for lab in np.unique(label) if n else []:
+            idx = np.flatnonzero(label == lab)
+            idx = idx[np.argsort(self.cy[idx], kind="stable")]
+            classes.append(_SortedClass(idx, self.cy[idx], float(self.r[idx].max()),
+                                        float(avy[idx].max())))
+        self.classes = classes
+
+    @property
+    def count(self) -> int:
+        return int(self.r.shape[0])
+
+    def hit_pairs(
+        self, x0: np.ndarray, y0: np.ndarray, t0: np.ndarray, x1: np.ndarray, y1: np.ndarray,
+        t1: np.ndarray,
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """(segment, circle) indices of every pair where the segment enters the open circle.
+
+        Segments are given as flat arrays of equal length Q (times >= 0 not required).
+        """
+        q = x0.shape[0]
+        empty = np.zeros(0, dtype=np.int64)
+        if q == 0 or not self.classes:
+            return empty, empty
+        ylo, yhi = np.minimum(y0, y1), np.maximum(y0, y1)
+        tabs = np.maximum(np.abs(t0), np.abs(t1))
+        ranges = []
+        per_seg = np.zeros(q, dtype=np.int64)
+        for c in self.classes:
+            slack = (c.reach + c.drift * tabs) * (1.0 + 1e-9) + 1e-9
+            lo = np.searchsorted(c.key, ylo - slack, side="left")
+            cnt = np.searchsorted(c.key, yhi + slack, side="right") - lo
+            ranges.append((c, lo, cnt))
+            per_seg += cnt
+        cum = np.cumsum(per_seg)
+        if cum[-1] == 0:
+            return empty, empty
+        cuts = np.searchsorted(cum, np.arange(PAIR_CHUNK, int(cum[-1]), PAIR_CHUNK), side="left")
+        bounds = np.unique(np.concatenate([[0], cuts + 1, [q]]))
+        bounds = bounds[bounds <= q]
+        out_s, out_o = [], []
+        for a, b in zip(bounds[:-1], bounds[1:], strict=True):
+            segs, obss = [], []
+            for c, lo, cnt in ranges:
+                cc = cnt[a:b]
+                n = int(cc.sum())
+                if n == 0:
+                    continue
+                first = np.cumsum(cc) - cc
+                segs.append(np.repeat(np.arange(a, b), cc))
+                obss.append(c.order[np.repeat(lo[a:b] - first, cc) + np.arange(n)])
+            if not segs:
+                continue
+            seg = np.concatenate(segs) if len(segs) > 1 else segs[0]
+            obs = np.concatenate(obss) if len(obss) > 1 else obss[0]
+            s0, s1 = t0[seg], t1[seg]
+            cx, vx, r = self.cx[obs], self.vx[obs], self.r[obs]
+            ox0, ox1 = cx + vx * s0, cx + vx * s1
+            xa, xb = x0[seg], x1[seg]
+            keep = ((np.maximum(ox0, ox1) + r >= np.minimum(xa, xb))
+                    & (np.minimum(ox0, ox1) - r <= np.maximum(xa, xb)))
+            seg, obs, s0, s1 = seg[keep], obs[keep], s0[keep], s1[keep]
+            cx, cy, vx, vy, r = (a_[obs] for a_ in (self.cx, self.cy, self.vx, self.vy, self.r))
+            hit = hits_from_relative(
+                x0[seg] - (cx + vx * s0), y0[seg] - (cy + vy * s0),
+                x1[seg] - (cx + vx * s1), y1[seg] - (cy + vy * s1), r,
+            )
+            out_s.append(seg[hit])
+            out_o.append(obs[hit])
+        if not out_s:
+            return empty, empty
+        return np.concatenate(out_s), np.concatenate(out_o)
