@@ -365,7 +365,7 @@ def bench_deap(scenario: Scenario, seeds: list[int], max_generations: int) -> li
     for seed in seeds:
         opts = scenario.planner_options(seed=seed)
         layout = GeneLayout.build(problem, opts)
-        evaluator = Evaluator(problem, opts)
+        evaluator = Evaluator(problem, opts, layout.segment_x_range())
         result = run_iga(problem, opts, layout)
         target = float(result.evaluation.fitness[0])
         levels, _, _ = _foundation(layout, problem, opts, np.random.default_rng(seed))

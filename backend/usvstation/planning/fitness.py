@@ -32,10 +32,9 @@ import numpy as np
 from usvstation.planning.encoding import PathBatch
 from usvstation.planning.options import IGAOptions
 from usvstation.planning.problem import Problem
-from usvstation.planning.xyt import Num, SweepIndex, polyline_hits, relative_positions
+from usvstation.planning.xyt import Num, hits_from_relative, polyline_hits, relative_positions
 
 _EPS = 1e-9
-SWEEP_MIN_OBSTACLES = 24  # from this many circles on, collisions go through a SweepIndex
 BRUTE_CHUNK = 1 << 18  # (obstacle, path, waypoint) elements per all-pairs pass: 2 MB a temporary
 
 
@@ -112,39 +111,70 @@ def collision_matrix(paths: PathBatch, problem: Problem) -> np.ndarray:
 class Evaluator:
     """Eq. 12 for batches of paths of one problem.
 
-    Collisions (eq. 9) are counted exactly per (segment, obstacle) pair. With
-    few obstacles every pair is tested in one pass; with many (or `sweep` =
-    True) the pairs come from a sweep-and-prune index along y
-    (`xyt.SweepIndex`), so the cost grows with the obstacles near each
-    segment rather than with all of them; both give the same counts.
+    Collisions (eq. 9) are counted exactly per (segment, obstacle) pair.
+    Given the x-range every segment can span (the encoding fixes it:
+    segment s runs between waypoint blocks s-1 and s), static obstacles
+    whose inflated circle cannot reach that range are never tested against
+    it, and the remaining pairs are pruned by the batch's box in x-y-t.
+    Without ranges every pair is tested (in chunks of `BRUTE_CHUNK`
+    elements). Both give the same counts.
     """
 
-    def __init__(self, problem: Problem, opts: IGAOptions, sweep: bool | None = None) -> None:
+    def __init__(self, problem: Problem, opts: IGAOptions,
+                 segment_x_range: tuple[np.ndarray, np.ndarray] | None = None) -> None:
         self.problem, self.opts = problem, opts
-        f = problem.obstacles
         self.distance = max(problem.distance, _EPS)
-        use = f.count >= SWEEP_MIN_OBSTACLES if sweep is None else sweep
-        self.index = SweepIndex(f.centre[:, 0], f.centre[:, 1], f.velocity[:, 0],
-                                f.velocity[:, 1], f.inflated) if use and f.count else None
+        self.pairs: tuple[np.ndarray, np.ndarray] | None = None
+        f = problem.obstacles
+        if segment_x_range is not None and f.count:
+            lo, hi = segment_x_range
+            cx, r = f.centre[:, 0], f.inflated
+            near = (cx[None, :] + r >= lo[:, None]) & (cx[None, :] - r <= hi[:, None])
+            seg, obs = np.nonzero(near | ~f.static[None, :])
+            col = f.centre[obs], f.velocity[obs]
+            self.pairs = (seg, obs)
+            self._pair_obs = (col[0][:, 0], col[0][:, 1], col[1][:, 0], col[1][:, 1], r[obs])
 
     def collisions(self, paths: PathBatch) -> np.ndarray:
         """Number of (segment, obstacle) pairs in collision, per path (exact)."""
         if self.problem.obstacles.count == 0:
             return np.zeros(len(paths), dtype=np.int64)
-        if self.index is None:
+        if self.pairs is None:
             m, (p, n) = self.problem.obstacles.count, paths.x.shape
             step = max(1, BRUTE_CHUNK // (m * n))  # bounds memory: paths per pass
-            if step >= p:
-                return collision_matrix(paths, self.problem).sum(axis=(0, 1))
             return np.concatenate([
                 collision_matrix(paths.rows(slice(k, k + step)), self.problem).sum(axis=(0, 1))
                 for k in range(0, p, step)])
-        p, s = paths.seg_len.shape
-        x, y, t = paths.x, paths.y, paths.t
-        seg, _ = self.index.hit_pairs(
-            x[:, :-1].ravel(), y[:, :-1].ravel(), t[:, :-1].ravel(),
-            x[:, 1:].ravel(), y[:, 1:].ravel(), t[:, 1:].ravel())
-        return np.bincount(seg // s, minlength=p)
+        seg_all, keep_all = self._pairs_near(paths)
+        total = np.zeros(len(paths), dtype=np.int64)
+        step = max(1, BRUTE_CHUNK // max(len(paths), 1))  # bounds memory on huge inputs
+        for k in range(0, seg_all.shape[0], step):
+            seg, keep = seg_all[k:k + step], keep_all[k:k + step]
+            cx, cy, vx, vy, r = (a[keep] for a in self._pair_obs)
+            t0, t1 = paths.t[:, seg], paths.t[:, seg + 1]
+            hits = hits_from_relative(
+                paths.x[:, seg] - (cx + vx * t0), paths.y[:, seg] - (cy + vy * t0),
+                paths.x[:, seg + 1] - (cx + vx * t1), paths.y[:, seg + 1] - (cy + vy * t1), r,
+            )
+            total += hits.sum(axis=1)
+        return total
+
+    def _pairs_near(self, paths: PathBatch) -> tuple[np.ndarray, np.ndarray]:
+        """The precomputed pairs whose obstacle can reach the batch's segment boxes."""
+        seg = self.pairs[0]
+        x0, x1, y0, y1 = paths.x[:, :-1], paths.x[:, 1:], paths.y[:, :-1], paths.y[:, 1:]
+        xlo = np.minimum(x0, x1).min(axis=0)[seg]
+        xhi = np.maximum(x0, x1).max(axis=0)[seg]
+        ylo = np.minimum(y0, y1).min(axis=0)[seg]
+        yhi = np.maximum(y0, y1).max(axis=0)[seg]
+        tlo, thi = paths.t[:, :-1].min(axis=0)[seg], paths.t[:, 1:].max(axis=0)[seg]
+        cx, cy, vx, vy, r = self._pair_obs
+        ox_lo = cx + np.minimum(vx * tlo, vx * thi) - r
+        ox_hi = cx + np.maximum(vx * tlo, vx * thi) + r
+        oy_lo = cy + np.minimum(vy * tlo, vy * thi) - r
+        oy_hi = cy + np.maximum(vy * tlo, vy * thi) + r
+        keep = np.flatnonzero((ox_hi >= xlo) & (ox_lo <= xhi) & (oy_hi >= ylo) & (oy_lo <= yhi))
+        return seg[keep], keep
 
     def __call__(self, paths: PathBatch) -> Evaluation:
         """Gates, terms and fitness (eq. 12, or the EG3 linear penalty) of every path."""

@@ -72,7 +72,7 @@ def run_iga(
     pop_n, n_elite = opts.population, opts.elite_count
     pm = opts.mutation_rate or min(0.5, 1.5 / layout.n_bits)
 
-    evaluator = Evaluator(problem, opts)
+    evaluator = Evaluator(problem, opts, layout.segment_x_range())
 
     def fitness(codes: np.ndarray) -> np.ndarray:
         return evaluator(layout.decode_codes(codes)).fitness

@@ -48,6 +48,7 @@ from usvstation.planning.xyt import Num, hits_from_relative
 _MAX_SLOPE = math.radians(80.0)  # steepest segment against the x step
 _SPREAD = math.radians(55.0)  # bearing spread of candidates around the aim
 _EPS = 1e-9
+_PAIR_MIN_OBSTACLES = 16  # from this many obstacles on, candidates are paired per individual
 
 
 @dataclass
@@ -197,7 +198,7 @@ class _Grower:
             good &= np.abs(slope - slope0) <= prob.turn_max + _EPS
         if prob.current != (0.0, 0.0):
             good &= ~water_speed_bad(x - px, y - py, pv, v, prob)
-        good &= self._free(self.near[k], px, py, pt, x, y, t)
+        good &= self._free(k, px, py, pt, x, y, t)
         if last:
             gx, gy = float(lay.goal[0]), float(lay.goal[1])
             gseg = np.hypot(x - gx, y - gy)
@@ -206,7 +207,7 @@ class _Grower:
             gvl, gv, gt, gok = self._speed(v, t, gseg, gdx / gseg, gdy / gseg)
             if prob.current != (0.0, 0.0):
                 gok &= ~water_speed_bad(gdx, gdy, v, gv, prob)
-            good &= gok & self._free(self.near[k + 1], x, y, t, gx, gy, gt)
+            good &= gok & self._free(k + 1, x, y, t, gx, gy, gt)
 
         placed = good.any(axis=1)
         key = np.where(walk.greedy[idx, None], np.abs(offset), rng.random((n, c)))
@@ -263,25 +264,55 @@ class _Grower:
         v = lay.v_of(vl)
         return vl, v, pt + 2.0 * seg / (pv + v), jlo <= jhi
 
-    def _free(
-        self, obs: _Obstacles, px: Num, py: Num, pt: Num, x: Num, y: Num, t: Num
-    ) -> np.ndarray:
-        """True where the segment misses every inflated obstacle of `obs` (eq. 9)."""
+    def _free(self, k: int, px: Num, py: Num, pt: Num, x: Num, y: Num, t: Num) -> np.ndarray:
+        """True where the segment ending in block k misses every inflated obstacle (eq. 9).
+
+        Only (obstacle, individual) pairs whose boxes meet are tested: the obstacle's
+        circle swept over the individual's time window against the box its candidate
+        segments span (exact pruning, never drops a hit).
+        """
+        obs = self.near[k]
+        shape = np.broadcast_shapes(np.shape(x), np.shape(px))
         if obs.index.size == 0:
-            return np.ones(np.shape(x), dtype=bool)
+            return np.ones(shape, dtype=bool)
         obs = _near_box(obs, px, py, pt, x, y, t)
         if obs.index.size == 0:
-            return np.ones(np.shape(x), dtype=bool)
-        free = np.ones(np.broadcast_shapes(np.shape(x), np.shape(px)), dtype=bool)
-        step = max(1, (1 << 21) // max(free.size, 1))  # bounds memory on huge inputs
-        for k in range(0, obs.index.size, step):
-            part = _Obstacles(*(a[k:k + step] for a in (obs.index, obs.cx, obs.cy, obs.vx,
-                                                         obs.vy, obs.r)))
-            ex0, ey0 = part.relative(px, py, pt)
-            ex1, ey1 = part.relative(x, y, t)
-            hits = hits_from_relative(ex0, ey0, ex1, ey1, part.r)  # (m, n, C)
-            self.report.obstacle_hits[part.index] += hits.sum(axis=(1, 2))
-            free &= ~hits.any(axis=0)
+            return np.ones(shape, dtype=bool)
+        if obs.index.size < _PAIR_MIN_OBSTACLES or len(shape) != 2:
+            ex0, ey0 = obs.relative(px, py, pt)
+            ex1, ey1 = obs.relative(x, y, t)
+            hits = hits_from_relative(ex0, ey0, ex1, ey1, obs.r)  # (m, n, C)
+            self.report.obstacle_hits[obs.index] += hits.sum(axis=(1, 2))
+            return ~hits.any(axis=0)
+        def rows(a: Num, reduce: np.ufunc) -> np.ndarray:
+            return reduce.reduce(np.broadcast_to(a, (shape[0], np.shape(a)[-1] if np.ndim(a)
+                                                     else 1)), axis=1)
+
+        xlo = np.minimum(rows(px, np.minimum), rows(x, np.minimum))
+        xhi = np.maximum(rows(px, np.maximum), rows(x, np.maximum))
+        ylo = np.minimum(rows(py, np.minimum), rows(y, np.minimum))
+        yhi = np.maximum(rows(py, np.maximum), rows(y, np.maximum))
+        tlo, thi = rows(pt, np.minimum), rows(t, np.maximum)
+        cx, cy, vx, vy, r = (a[:, 0, 0][:, None] for a in (obs.cx, obs.cy, obs.vx, obs.vy,
+                                                             obs.r))
+        near = ((cx + np.maximum(vx * tlo, vx * thi) + r >= xlo)
+                & (cx + np.minimum(vx * tlo, vx * thi) - r <= xhi)
+                & (cy + np.maximum(vy * tlo, vy * thi) + r >= ylo)
+                & (cy + np.minimum(vy * tlo, vy * thi) - r <= yhi))  # (m, n)
+        row, j = np.nonzero(near.T)  # pairs sorted by individual
+        free = np.ones(shape, dtype=bool)
+        if row.size == 0:
+            return free
+        col = (j, slice(None), 0)
+        e = [a if np.ndim(a) == 0 else np.asarray(a)[row] for a in (px, py, pt, x, y, t)]
+        hits = hits_from_relative(
+            e[0] - (obs.cx[col] + obs.vx[col] * e[2]), e[1] - (obs.cy[col] + obs.vy[col] * e[2]),
+            e[3] - (obs.cx[col] + obs.vx[col] * e[5]), e[4] - (obs.cy[col] + obs.vy[col] * e[5]),
+            obs.r[col])  # (pairs, C)
+        self.report.obstacle_hits[obs.index] += np.bincount(
+            j, weights=hits.sum(axis=1), minlength=obs.index.size).astype(np.int64)
+        first = np.flatnonzero(np.r_[True, row[1:] != row[:-1]])
+        free[row[first]] = ~np.logical_or.reduceat(hits, first, axis=0)
         return free
 
 
