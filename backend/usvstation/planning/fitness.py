@@ -35,7 +35,7 @@ from usvstation.planning.problem import Problem
 from usvstation.planning.xyt import Num, hits_from_relative, polyline_hits, relative_positions
 
 _EPS = 1e-9
-BRUTE_CHUNK = 1 << 18  # (obstacle, path, waypoint) elements per all-pairs pass: 2 MB a temporary
+BRUTE_CHUNK = 1 << 18  # elements per eq. 9 pass: 2 MB a temporary
 
 
 @dataclass(frozen=True)

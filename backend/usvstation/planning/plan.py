@@ -12,6 +12,7 @@ from scipy import ndimage
 from usvstation.planning.encoding import GeneLayout, InfeasibleProblem
 from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.planning.iga import IGAResult, run_iga
+from usvstation.planning.limits import check_memory
 from usvstation.planning.options import IGAOptions
 from usvstation.planning.problem import Problem, sweep_moving
 from usvstation.planning.smoothing import smooth_path
@@ -32,12 +33,15 @@ def plan_scenario(
     Every plan returned has passed the exact validator (`plan_violations`):
     true hull clearance, first turn, speed through the water, timing margin.
     The run stops at `planner.time_budget_s` with the best valid plan so far.
+    A plan whose memory estimate exceeds the bound raises PlanTooLarge
+    (`limits.check_memory`) before anything large is allocated.
     """
     if planner not in PLANNERS:
         raise ValueError(f"planner: unknown planner {planner!r}; available: {', '.join(PLANNERS)}")
     if seed is not None:
         overrides["seed"] = seed
     opts = scenario.planner_options(**overrides)
+    check_memory(scenario, opts)
     deadline = time.perf_counter() + opts.time_budget_s
     first: tuple[Problem, IGAResult] | None = None
     reasons: list[str] = []

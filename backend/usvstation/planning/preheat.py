@@ -34,7 +34,7 @@ moving ones always, static ones when their inflated circle overlaps it.
 from __future__ import annotations
 
 import math
-import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -49,6 +49,7 @@ _MAX_SLOPE = math.radians(80.0)  # steepest segment against the x step
 _SPREAD = math.radians(55.0)  # bearing spread of candidates around the aim
 _EPS = 1e-9
 _PAIR_MIN_OBSTACLES = 16  # from this many obstacles on, candidates are paired per individual
+KERNEL_ELEMENTS = 1 << 18  # elements per eq. 9 pass: 2 MB a temporary
 
 
 @dataclass
@@ -133,7 +134,10 @@ class _Grower:
             vx=f.velocity[idx, 0][col], vy=f.velocity[idx, 1][col], r=f.inflated[idx][col],
         )
 
-    def grow(self, count: int) -> tuple[np.ndarray, np.ndarray]:
+    def grow(self, count: int, expired: Callable[[], bool] | None = None,
+             ) -> tuple[np.ndarray, np.ndarray]:
+        """Walk `count` individuals to the goal; (levels, grown). `expired()` is asked
+        before every draw: once it is True no walk is finished."""
         lay = self.layout
         levels = np.zeros((count, lay.n_genes), dtype=np.int64)
         alive = np.ones(count, dtype=bool)
@@ -149,6 +153,9 @@ class _Grower:
             for attempt in range(self.opts.preheat_retries):
                 if pending.size == 0:
                     break
+                if expired is not None and expired():
+                    alive[:] = False
+                    return levels, alive
                 pending = pending[~self._draw(k, walk, pending, levels, wide=attempt > 0)]
             if pending.size:
                 alive[pending] = False
@@ -279,11 +286,17 @@ class _Grower:
         if obs.index.size == 0:
             return np.ones(shape, dtype=bool)
         if obs.index.size < _PAIR_MIN_OBSTACLES or len(shape) != 2:
-            ex0, ey0 = obs.relative(px, py, pt)
-            ex1, ey1 = obs.relative(x, y, t)
-            hits = hits_from_relative(ex0, ey0, ex1, ey1, obs.r)  # (m, n, C)
-            self.report.obstacle_hits[obs.index] += hits.sum(axis=(1, 2))
-            return ~hits.any(axis=0)
+            free = np.ones(shape, dtype=bool)
+            step = max(1, KERNEL_ELEMENTS // max(free.size, 1))  # bounds memory
+            for k in range(0, obs.index.size, step):
+                part = _Obstacles(*(a[k:k + step] for a in (obs.index, obs.cx, obs.cy, obs.vx,
+                                                             obs.vy, obs.r)))
+                ex0, ey0 = part.relative(px, py, pt)
+                ex1, ey1 = part.relative(x, y, t)
+                hits = hits_from_relative(ex0, ey0, ex1, ey1, part.r)  # (m, n, C)
+                self.report.obstacle_hits[part.index] += hits.sum(axis=(1, 2))
+                free &= ~hits.any(axis=0)
+            return free
         def rows(a: Num, reduce: np.ufunc) -> np.ndarray:
             return reduce.reduce(np.broadcast_to(a, (shape[0], np.shape(a)[-1] if np.ndim(a)
                                                      else 1)), axis=1)
@@ -299,20 +312,22 @@ class _Grower:
                 & (cx + np.minimum(vx * tlo, vx * thi) - r <= xhi)
                 & (cy + np.maximum(vy * tlo, vy * thi) + r >= ylo)
                 & (cy + np.minimum(vy * tlo, vy * thi) - r <= yhi))  # (m, n)
-        row, j = np.nonzero(near.T)  # pairs sorted by individual
+        rows_all, j_all = np.nonzero(near.T)  # pairs sorted by individual
         free = np.ones(shape, dtype=bool)
-        if row.size == 0:
-            return free
-        col = (j, slice(None), 0)
-        e = [a if np.ndim(a) == 0 else np.asarray(a)[row] for a in (px, py, pt, x, y, t)]
-        hits = hits_from_relative(
-            e[0] - (obs.cx[col] + obs.vx[col] * e[2]), e[1] - (obs.cy[col] + obs.vy[col] * e[2]),
-            e[3] - (obs.cx[col] + obs.vx[col] * e[5]), e[4] - (obs.cy[col] + obs.vy[col] * e[5]),
-            obs.r[col])  # (pairs, C)
-        self.report.obstacle_hits[obs.index] += np.bincount(
-            j, weights=hits.sum(axis=1), minlength=obs.index.size).astype(np.int64)
-        first = np.flatnonzero(np.r_[True, row[1:] != row[:-1]])
-        free[row[first]] = ~np.logical_or.reduceat(hits, first, axis=0)
+        step = max(1, KERNEL_ELEMENTS // shape[1])  # pairs per pass: bounds memory
+        for k in range(0, rows_all.size, step):
+            row, j = rows_all[k:k + step], j_all[k:k + step]
+            col = (j, slice(None), 0)
+            e = [a if np.ndim(a) == 0 else np.asarray(a)[row] for a in (px, py, pt, x, y, t)]
+            hits = hits_from_relative(
+                e[0] - (obs.cx[col] + obs.vx[col] * e[2]),
+                e[1] - (obs.cy[col] + obs.vy[col] * e[2]),
+                e[3] - (obs.cx[col] + obs.vx[col] * e[5]),
+                e[4] - (obs.cy[col] + obs.vy[col] * e[5]), obs.r[col])  # (pairs, C)
+            self.report.obstacle_hits[obs.index] += np.bincount(
+                j, weights=hits.sum(axis=1), minlength=obs.index.size).astype(np.int64)
+            first = np.flatnonzero(np.r_[True, row[1:] != row[:-1]])
+            free[row[first]] &= ~np.logical_or.reduceat(hits, first, axis=0)
         return free
 
 
@@ -335,7 +350,7 @@ def _near_box(obs: _Obstacles, px: Num, py: Num, pt: Num, x: Num, y: Num, t: Num
 
 def preheat(
     layout: GeneLayout, problem: Problem, opts: IGAOptions, rng: np.random.Generator,
-    count: int, need: int | None = None, deadline: float | None = None,
+    count: int, need: int | None = None, expired: Callable[[], bool] | None = None,
 ) -> tuple[np.ndarray, np.ndarray, PreheatReport]:
     """Grow `count` individuals; returns (levels (count, G), ok (count,), report).
 
@@ -351,12 +366,12 @@ def preheat(
     for _ in range(opts.preheat_restarts + 1):
         if todo.size == 0 or ok.sum() >= need:
             break
-        if deadline is not None and time.perf_counter() > deadline:
-            break
-        lv, good = grower.grow(todo.size)
+        lv, good = grower.grow(todo.size, expired)
         levels[todo[good]] = lv[good]
         ok[todo[good]] = True
         todo = todo[~good]
+        if expired is not None and expired():
+            break
     report.produced = int(ok.sum())
     return levels, ok, report
 
