@@ -99,13 +99,16 @@ def run_iga(
 
     levels, fresh, report = _foundation(layout, problem, opts, rng, expired)
     codes = layout.levels_to_codes(levels)
-    pop = _Population(codes, fitness(codes)[0])
+    first_fit, complete = fitness(codes)
+    pop = _Population(codes, first_fit)
 
     best_codes, best_fit = pop.codes[np.argmax(pop.fit)].copy(), float(pop.fit.max())
     hist_best, hist_elite = [best_fit], [_elite_mean(pop.fit, n_elite)]
     stop, gen = "generations_max", 0
+    if not complete or expired():
+        stop = "time_budget"
     n_newborn = pop_n // 2  # SSIH candidates per generation, sized from the last death toll
-    while gen < opts.generations_max:
+    while gen < opts.generations_max and stop != "time_budget":
         gen += 1
         order = np.argsort(-pop.fit, kind="stable")
         elite = order[:n_elite]
