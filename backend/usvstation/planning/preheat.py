@@ -28,7 +28,11 @@ are the fastest the acceleration limit allows, the rest uniform in the
 reachable range.
 
 Only obstacles that can reach a waypoint block's x-range are tested there:
-moving ones always, static ones when their inflated circle overlaps it.
+moving ones always, static ones when their inflated circle overlaps it; of
+those, a draw tests the ones that reach its box in x-y-t, and with 16 or
+more, each individual's candidates only against the ones that reach its own
+box (exact: the same points are kept as by the all-pairs test). Every eq. 9
+pass holds at most `KERNEL_ELEMENTS` elements.
 """
 
 from __future__ import annotations
@@ -286,26 +290,37 @@ class _Grower:
         if obs.index.size == 0:
             return np.ones(shape, dtype=bool)
         if obs.index.size < _PAIR_MIN_OBSTACLES or len(shape) != 2:
-            free = np.ones(shape, dtype=bool)
-            step = max(1, KERNEL_ELEMENTS // max(free.size, 1))  # bounds memory
-            for k in range(0, obs.index.size, step):
-                part = _Obstacles(*(a[k:k + step] for a in (obs.index, obs.cx, obs.cy, obs.vx,
-                                                             obs.vy, obs.r)))
-                ex0, ey0 = part.relative(px, py, pt)
-                ex1, ey1 = part.relative(x, y, t)
-                hits = hits_from_relative(ex0, ey0, ex1, ey1, part.r)  # (m, n, C)
-                self.report.obstacle_hits[part.index] += hits.sum(axis=(1, 2))
-                free &= ~hits.any(axis=0)
-            return free
-        def rows(a: Num, reduce: np.ufunc) -> np.ndarray:
-            return reduce.reduce(np.broadcast_to(a, (shape[0], np.shape(a)[-1] if np.ndim(a)
-                                                     else 1)), axis=1)
+            return self._free_all(obs, shape, px, py, pt, x, y, t)
+        return self._free_paired(obs, shape, px, py, pt, x, y, t)
 
-        xlo = np.minimum(rows(px, np.minimum), rows(x, np.minimum))
-        xhi = np.maximum(rows(px, np.maximum), rows(x, np.maximum))
-        ylo = np.minimum(rows(py, np.minimum), rows(y, np.minimum))
-        yhi = np.maximum(rows(py, np.maximum), rows(y, np.maximum))
-        tlo, thi = rows(pt, np.minimum), rows(t, np.maximum)
+    def _free_all(self, obs: _Obstacles, shape: tuple[int, ...], px: Num, py: Num, pt: Num,
+                  x: Num, y: Num, t: Num) -> np.ndarray:
+        """Every candidate against every obstacle of `obs`, in memory-bounded passes."""
+        free = np.ones(shape, dtype=bool)
+        step = max(1, KERNEL_ELEMENTS // max(free.size, 1))
+        for i in range(0, obs.index.size, step):
+            part = _Obstacles(*(a[i:i + step] for a in (obs.index, obs.cx, obs.cy, obs.vx,
+                                                         obs.vy, obs.r)))
+            ex0, ey0 = part.relative(px, py, pt)
+            ex1, ey1 = part.relative(x, y, t)
+            hits = hits_from_relative(ex0, ey0, ex1, ey1, part.r)  # (m, n, C)
+            self.report.obstacle_hits[part.index] += hits.sum(axis=(1, 2))
+            free &= ~hits.any(axis=0)
+        return free
+
+    def _free_paired(self, obs: _Obstacles, shape: tuple[int, ...], px: Num, py: Num,
+                     pt: Num, x: Num, y: Num, t: Num) -> np.ndarray:
+        """Candidates (n, C) tested only against the obstacles that reach the box of their
+        own individual's segments over its time window, in memory-bounded passes."""
+        def per_row(a: Num, reduce: np.ufunc) -> np.ndarray:
+            width = np.shape(a)[-1] if np.ndim(a) else 1
+            return reduce.reduce(np.broadcast_to(a, (shape[0], width)), axis=1)
+
+        xlo = np.minimum(per_row(px, np.minimum), per_row(x, np.minimum))
+        xhi = np.maximum(per_row(px, np.maximum), per_row(x, np.maximum))
+        ylo = np.minimum(per_row(py, np.minimum), per_row(y, np.minimum))
+        yhi = np.maximum(per_row(py, np.maximum), per_row(y, np.maximum))
+        tlo, thi = per_row(pt, np.minimum), per_row(t, np.maximum)
         cx, cy, vx, vy, r = (a[:, 0, 0][:, None] for a in (obs.cx, obs.cy, obs.vx, obs.vy,
                                                              obs.r))
         near = ((cx + np.maximum(vx * tlo, vx * thi) + r >= xlo)
@@ -314,9 +329,9 @@ class _Grower:
                 & (cy + np.minimum(vy * tlo, vy * thi) - r <= yhi))  # (m, n)
         rows_all, j_all = np.nonzero(near.T)  # pairs sorted by individual
         free = np.ones(shape, dtype=bool)
-        step = max(1, KERNEL_ELEMENTS // shape[1])  # pairs per pass: bounds memory
-        for k in range(0, rows_all.size, step):
-            row, j = rows_all[k:k + step], j_all[k:k + step]
+        step = max(1, KERNEL_ELEMENTS // shape[1])  # pairs per pass
+        for i in range(0, rows_all.size, step):
+            row, j = rows_all[i:i + step], j_all[i:i + step]
             col = (j, slice(None), 0)
             e = [a if np.ndim(a) == 0 else np.asarray(a)[row] for a in (px, py, pt, x, y, t)]
             hits = hits_from_relative(
