@@ -30,12 +30,14 @@ run: setup
 
 serve: run
 
+# Three workers (pytest-xdist), one module per worker at a time so a module's station
+# fixture starts once: most tests wait on a simulated boat, so three fit on two cores.
 test: setup
-	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest -n 3 --dist loadscope
 
-# Unit tests only (no servers, browsers or ptys): under a minute.
+# Unit tests only (no servers, browsers, ptys, process pools or benchmarks): under a minute.
 test-fast: setup
-	$(BIN)/python -m pytest tests/unit -q
+	$(BIN)/python -m pytest tests/unit -q -n 3
 
 lint: setup
 	$(BIN)/ruff check backend tests

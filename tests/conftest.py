@@ -12,7 +12,7 @@ from hypothesis import settings
 settings.register_profile("station", deadline=None)
 settings.load_profile("station")
 # Stations started by the tests (in-process or `serve` subprocesses, which inherit this)
-# allow a plan 120 s instead of 10 s: plan workers run at idle CPU priority, so on a loaded
+# allow a plan 120 s instead of 10 s: plan workers run at nice 10, so on a loaded
 # machine a plan can wait long for the CPU. test_faults passes --plan-timeout-s to test the
 # limit itself.
 os.environ.setdefault("USV_STATION_PLAN_TIMEOUT_S", "120")

@@ -25,8 +25,12 @@ class ServeProcess:
         self._log = self.log.open("w")
         self.proc = subprocess.Popen(cmd, stdout=self._log, stderr=subprocess.STDOUT,
                                      env={**os.environ, "PYTHONUNBUFFERED": "1", **(env or {})})
-        self.url = self._wait_for("console", r"console (http://[^/]+)/")
-        self.viser_url = self._wait_for("3D view", r"3D view (http://\S+)/")
+        try:
+            self.url = self._wait_for("console", r"console (http://[^/]+)/")
+            self.viser_url = self._wait_for("3D view", r"3D view (http://\S+)/")
+        except BaseException:  # never leave a station behind that nobody will stop
+            self.stop(signal.SIGKILL)
+            raise
 
     def _wait_for(self, what: str, pattern: str, timeout: float = 60.0) -> str:
         deadline = time.monotonic() + timeout

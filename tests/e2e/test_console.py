@@ -246,3 +246,35 @@ def test_map_geometry_matches_the_station(page, station):
             assert abs(js_lat - py_lat) < 1e-10 and abs(js_lon - py_lon) < 1e-10
             assert abs(js_x - x) < 1e-6 and abs(js_y - y) < 1e-6
     assert json.dumps(got)  # plain numbers, no NaN
+
+
+def test_api_docs_render_in_the_browser_with_the_network_blocked(browser, station, artifacts):
+    """/docs (Swagger UI) and /redoc draw the station's own API from local assets only."""
+    context = browser.new_context(viewport={"width": 1280, "height": 800})
+    blocked: list[str] = []
+
+    def only_the_station(route):
+        if route.request.url.startswith(station.url):
+            route.continue_()
+        else:
+            blocked.append(route.request.url)
+            route.abort()
+
+    context.route("**/*", only_the_station)
+    page = context.new_page()
+    errors: list[str] = []
+    page.on("pageerror", lambda exc: errors.append(str(exc)))
+    try:
+        open_console(page, station)  # trades the token for the session cookie
+        page.goto(station.url + "/docs")
+        expect(page.locator(".swagger-ui .info .title")).to_contain_text("USV")
+        expect(page.locator(".opblock-summary-path", has_text="/api/health").first)\
+            .to_be_visible()
+        page.screenshot(path=artifacts / "api-docs-swagger.png")
+        page.goto(station.url + "/redoc")
+        expect(page.locator("h1").first).to_contain_text("USV", timeout=20_000)
+        expect(page.get_by_text("/api/health").first).to_be_attached()
+        page.screenshot(path=artifacts / "api-docs-redoc.png")
+        assert blocked == [] and errors == []
+    finally:
+        context.close()

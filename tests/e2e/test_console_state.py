@@ -134,7 +134,7 @@ def quick_station(tmp_path):
     run lasts less than a second, between two telemetry frames and two heartbeats."""
     st = StationProcess(tmp_path / "data", "--sim-speed", "100",
                         env={"USV_STATION_TELEMETRY_HZ": "0.001"})
-    st.wait_link_up()
+    st.wait_link_up(first_frame=False)
     yield st
     st.stop()
 

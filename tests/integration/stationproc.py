@@ -29,15 +29,18 @@ class StationProcess(ServeProcess):
     def wait_plan(self, plan_id: str, timeout: float = 30.0) -> dict:
         return self.wait(f"/api/plans/{plan_id}", "status", ("queued", "running"), timeout)
 
-    def wait_link_up(self, timeout: float = 60.0) -> dict:
-        """GET /api/boat once the boat's first report put the link up (startup prints the
-        URLs before the simulated boat's first HEARTBEAT arrives)."""
+    def wait_link_up(self, timeout: float = 60.0, first_frame: bool = True) -> dict:
+        """GET /api/boat once the boat's first report put the link up and (`first_frame`)
+        its first telemetry frame arrived (startup prints the URLs before the simulated
+        boat's first HEARTBEAT; the first position follows on the boat's telemetry grid)."""
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
             boat = self.client.get("/api/boat").json()
-            if boat["link"]["up"] and boat["boat"] is not None:
+            flowing = boat["link"]["frames"] > 0 or not first_frame
+            if boat["link"]["up"] and boat["boat"] is not None and flowing:
                 return boat
             time.sleep(0.05)
+        self.stop()  # the fixture that called this never reaches its own stop()
         raise AssertionError(f"the boat link is not up after {timeout} s: {boat['link']}")
 
     def wait(self, path: str, key: str, pending: tuple, timeout: float) -> dict:

@@ -184,11 +184,35 @@ def test_half_open_connections_leave_the_station_answering(station):
             s.close()
 
 
+def test_a_kept_alive_connection_slow_on_its_second_request_is_closed(station):
+    """The header timeout (2 s here) covers every request of a connection, not the first."""
+    parts = urlsplit(station.url)
+    with socket.create_connection((parts.hostname, parts.port), timeout=30) as s:
+        s.sendall(f"GET /api/health HTTP/1.1\r\nHost: {parts.netloc}\r\n\r\n".encode())
+        first = b""
+        while b"\r\n\r\n" not in first:
+            first += s.recv(65536)
+        head, _, body = first.partition(b"\r\n\r\n")
+        assert head.startswith(b"HTTP/1.1 200")
+        length = int(re.search(rb"(?i)content-length: *(\d+)", head).group(1))
+        while len(body) < length:
+            body += s.recv(65536)
+        s.sendall(b"GET /api/health HTTP/1.1\r\nHost: x")  # the second never finishes
+        data = b""
+        while True:
+            piece = s.recv(65536)
+            if not piece:
+                break
+            data += piece
+        assert data == b""  # closed without an answer
+
+
 def test_api_docs_are_served_from_the_station_itself(station):
     c = station.client
     for page in ("/docs", "/redoc"):
         r = c.get(page)
         assert r.status_code == 200
+        assert r.headers["content-security-policy"].startswith("default-src 'self'")
         links = re.findall(r'(?:src|href|spec-url|url:\s*)=?\s*["\']([^"\']+)["\']', r.text)
         assert links and all(link.startswith("/") for link in links), links
         for link in links:

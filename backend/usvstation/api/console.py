@@ -63,6 +63,18 @@ def mount_console(app: FastAPI, frontend_dir: Path) -> None:
                   name=f"vendor-{name}")
 
 
+# The API docs pages may load nothing from outside the station: ReDoc's bundle asks a CDN
+# for its logo, which a browser at sea would wait on (and which leaks that the page is open).
+DOCS_CSP = ("default-src 'self'; img-src 'self' data: blob:; font-src 'self' data:; "
+            "style-src 'self' 'unsafe-inline'; script-src 'self' 'unsafe-inline' blob:; "
+            "worker-src 'self' blob:; connect-src 'self'")
+
+
+def _docs_page(page: HTMLResponse) -> HTMLResponse:
+    page.headers["Content-Security-Policy"] = DOCS_CSP
+    return page
+
+
 def mount_docs(app: FastAPI, frontend_dir: Path) -> None:
     """`/docs` (Swagger UI) and `/redoc` from the npm packages in frontend/node_modules, so the
     API documentation needs no internet; 503 with the reason when they are not installed."""
@@ -77,21 +89,21 @@ def mount_docs(app: FastAPI, frontend_dir: Path) -> None:
         if missing:
             return PlainTextResponse(f"API docs not available: {', '.join(missing)} missing; "
                                      "run `npm ci` in frontend/\n", status_code=503)
-        return get_swagger_ui_html(
+        return _docs_page(get_swagger_ui_html(
             openapi_url=app.openapi_url or "/openapi.json", title=title,
             swagger_js_url="/vendor/swagger-ui/swagger-ui-bundle.js",
             swagger_css_url="/vendor/swagger-ui/swagger-ui.css",
-            swagger_favicon_url="/vendor/swagger-ui/favicon-32x32.png")
+            swagger_favicon_url="/vendor/swagger-ui/favicon-32x32.png"))
 
     @app.get("/redoc", include_in_schema=False)
     async def redoc_ui() -> HTMLResponse:
         if missing:
             return PlainTextResponse(f"API docs not available: {', '.join(missing)} missing; "
                                      "run `npm ci` in frontend/\n", status_code=503)
-        return get_redoc_html(openapi_url=app.openapi_url or "/openapi.json", title=title,
-                              redoc_js_url="/vendor/redoc/redoc.standalone.js",
-                              redoc_favicon_url="/vendor/swagger-ui/favicon-32x32.png",
-                              with_google_fonts=False)
+        return _docs_page(get_redoc_html(
+            openapi_url=app.openapi_url or "/openapi.json", title=title,
+            redoc_js_url="/vendor/redoc/redoc.standalone.js",
+            redoc_favicon_url="/vendor/swagger-ui/favicon-32x32.png", with_google_fonts=False))
 
     if not missing:
         for name, sub in DOCS_VENDOR.items():

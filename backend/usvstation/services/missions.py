@@ -120,11 +120,16 @@ class MissionRecord:
     def total(self) -> int:
         return len(self.items)
 
+    @property
+    def opened_run(self) -> int | None:
+        """The run's id once the store opened it (None while it is only claimed: -1)."""
+        return self.run if self.run is not None and self.run > 0 else None
+
     def to_row(self) -> dict[str, Any]:
         return {"id": self.id, "plan_id": self.plan_id, "wire_id": self.wire_id,
                 "created_at": self.created_at, "state": self.state.value,
                 "progress": {"sent": self.sent, "acked": self.acked, "total": self.total},
-                "error": self.error, "run": self.run, "origin": self.origin,
+                "error": self.error, "run": self.opened_run, "origin": self.origin,
                 "items": self.items}
 
     @classmethod
@@ -141,7 +146,7 @@ class MissionRecord:
         return {"id": self.id, "plan_id": self.plan_id, "state": self.state.value,
                 "progress": {"sent": self.sent, "acked": self.acked, "total": self.total},
                 "error": self.error, "created_at": self.created_at, "wire_id": self.wire_id,
-                "crc32": self.crc, "run": self.run}
+                "crc32": self.crc, "run": self.opened_run}
 
     def apply(self, report: MissionState) -> bool:
         """Derive the state from a boat report; True when it changed."""

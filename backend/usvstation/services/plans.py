@@ -4,7 +4,7 @@ Each of the `workers` slots owns one worker process and a pipe to it. A job
 that overruns `timeout_s`, is cancelled (`DELETE /api/plans/{id}`) or whose
 worker dies (killed, out of memory) ends `failed` or `cancelled` with the
 reason, and the slot starts a fresh worker, so one bad job never breaks
-planning. Workers run under SCHED_IDLE with an address-space limit of
+planning. Workers run at nice 10 with an address-space limit of
 `memory_mb`, and die with the station (PR_SET_PDEATHSIG, even on kill -9).
 At most `queue_max` jobs wait or run at once; beyond that `submit` refuses.
 Every job ends in a final state (done, failed, cancelled), even when the
@@ -39,7 +39,7 @@ from usvstation.store.db import Store, utc_now
 
 log = logging.getLogger("usvstation.plans")
 
-WORKER_NICENESS = 19
+WORKER_NICENESS = 10  # the niceness plan workers run at (the server: its own, usually 0)
 WORKER_START_TIMEOUT_S = 120.0
 FINAL = ("done", "failed", "cancelled")
 PR_SET_PDEATHSIG = 1
@@ -120,11 +120,13 @@ def outdated_by(planned: dict[str, Any], working: Scenario) -> list[str]:
 
 
 def init_worker(memory_mb: int | None = None) -> None:
-    """Plan workers: tuned allocator, a memory limit, and the CPU only when the server idles.
+    """Plan workers: tuned allocator, a memory limit, and a lower CPU priority.
 
     Planning is background work; the event loop (telemetry, websocket, API)
     must get the CPU first on a 2-core machine running several plans, so the
-    workers run under SCHED_IDLE (Linux), else at the lowest nice level.
+    workers run at nice 10 (about a tenth of the weight of the server). Not
+    SCHED_IDLE: beside any busy process such a worker gets no CPU at all, and
+    the station could neither start (it waits for its workers) nor plan.
     """
     tune_allocator()
     if memory_mb is not None:
@@ -134,11 +136,8 @@ def init_worker(memory_mb: int | None = None) -> None:
             limit = min(limit, hard)
         with contextlib.suppress(ValueError, OSError):
             resource.setrlimit(resource.RLIMIT_AS, (limit, hard))
-    try:
-        os.sched_setscheduler(0, os.SCHED_IDLE, os.sched_param(0))
-    except (AttributeError, OSError):
-        with contextlib.suppress(OSError):
-            os.nice(WORKER_NICENESS)
+    with contextlib.suppress(OSError):
+        os.nice(max(0, WORKER_NICENESS - os.nice(0)))
 
 
 def worker_main(conn: Connection, parent_pid: int, memory_mb: int) -> None:

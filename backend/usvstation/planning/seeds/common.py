@@ -143,17 +143,19 @@ def speed_profile(pts: np.ndarray, scenario: Scenario, cruise: float,
 
 
 def dedupe(pts: np.ndarray, tol: float = 1e-3) -> np.ndarray:
-    """Drop points closer than `tol` to their predecessor (the last point is kept)."""
+    """Drop points closer than `tol` to their predecessor; the first and last points are
+    always kept (both, even when they are closer than `tol`)."""
     pts = np.asarray(pts, float)
     keep = [0]
     for i in range(1, len(pts)):
         if np.hypot(*(pts[i] - pts[keep[-1]])) > tol:
             keep.append(i)
         elif i == len(pts) - 1:
-            keep[-1] = i if len(keep) > 1 else keep[-1]
-    out = pts[keep]
-    out[-1] = pts[-1]
-    return out
+            if len(keep) > 1:
+                keep[-1] = i
+            else:
+                keep.append(i)
+    return pts[keep].copy()
 
 
 def turns_deg(pts: np.ndarray) -> np.ndarray:
@@ -169,16 +171,18 @@ def limit_turns(pts: np.ndarray, turn_max_deg: float, cut: float) -> np.ndarray:
 
     A corner V between A and B becomes two points at distance c (at most
     `cut`, at most 45 % of either leg) before and after V on its legs: each
-    new corner turns half as much. Endpoints never move.
+    new corner turns half as much. Endpoints never move. Points closer than 1 % of `cut`
+    merge first: two corners millimetres apart are one (a reversal there is a spike).
     """
-    pts = dedupe(pts)
+    tol = max(1e-3, 0.01 * cut)
+    pts = dedupe(pts, tol)
     for _ in range(len(pts)):  # a reversal (turn ~180 deg) cannot be cut: drop the spike
         tr = turns_deg(pts)
         spikes = np.flatnonzero(tr > 179.0) + 1
         if spikes.size == 0:
             break
-        pts = dedupe(np.delete(pts, spikes[:1], axis=0))
-    for _ in range(12):
+        pts = dedupe(np.delete(pts, spikes[:1], axis=0), tol)
+    for _ in range(64):
         tr = turns_deg(pts)
         bad = np.flatnonzero(tr > turn_max_deg - 0.5) + 1
         if bad.size == 0:

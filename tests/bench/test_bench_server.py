@@ -16,3 +16,6 @@ def test_quick_server_bench():
     assert ab["body_50mb_no_token"]["statuses"] == [401]
     assert ab["half_open_connections"] == 1000 and ab["health_during_half_open"]["count"] > 20
     assert ab["health_errors"] == 0 and ab["loop_lag_worst_ms"] >= 0
+    worst = (out["loop_lag_worst_ms_websocket"], out["loop_lag_worst_ms_planning"],
+             ab["loop_lag_worst_ms"])
+    assert out["loop_lag_worst_ms"] == max(worst)
