@@ -22,6 +22,7 @@ that depends on the decoded x.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field
 
@@ -150,8 +151,8 @@ class GeneLayout:
     def n_genes(self) -> int:
         return int(self.gene_bits.shape[0])
 
-    @property
-    def n_bits(self) -> int:
+    @functools.cached_property
+    def n_bits(self) -> int:  # cached: the operators ask for it several times a generation
         return int(self.gene_bits.sum())
 
     @property
