@@ -15,17 +15,9 @@ import numpy as np
 import pymap3d
 from numpy.typing import ArrayLike
 
+from usvstation.geometry import wrap_deg
+
 _WGS84 = pymap3d.Ellipsoid.from_name("wgs84")
-
-
-def wrap_deg(angle_deg: ArrayLike) -> np.ndarray:
-    """Wrap degrees to [0, 360)."""
-    return np.mod(np.asarray(angle_deg, dtype=float), 360.0)
-
-
-def wrap_pi(angle_rad: ArrayLike) -> np.ndarray:
-    """Wrap radians to [-pi, pi)."""
-    return np.mod(np.asarray(angle_rad, dtype=float) + np.pi, 2.0 * np.pi) - np.pi
 
 
 @dataclass(frozen=True)

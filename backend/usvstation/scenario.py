@@ -15,6 +15,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
+from usvstation.geometry import inflated_radius
 from usvstation.planning.options import IGAOptions
 from usvstation.world.ships import MotherShip, TrafficShip
 
@@ -132,17 +133,14 @@ class Scenario(BaseModel):
             raise ValueError("goal: must lie at least 1 m from the start")
         for field, point in (("start", self.start), ("goal", self.goal)):
             for i, obs in enumerate(self.obstacles):
-                r_l = self.inflated_radius(obs)
+                r_l = inflated_radius(obs.radius, self.vessel.length,
+                                      self.vessel.compensation_radius)
                 if math.hypot(point.x - obs.x, point.y - obs.y) < r_l:
                     raise ValueError(
                         f"{field}: ({point.x:g}, {point.y:g}) lies inside obstacles[{i}] "
                         f"inflated to R_l = {r_l:g} m (eq. 7) at t = 0"
                     )
         return self
-
-    def inflated_radius(self, obstacle: Obstacle) -> float:
-        """R_l = R_obs + D_USV + R_c (paper 000 eq. 7)."""
-        return obstacle.radius + self.vessel.length + self.vessel.compensation_radius
 
     def planner_options(self, **overrides: Any) -> IGAOptions:
         """The scenario's planner options with `overrides` applied (validated)."""

@@ -13,6 +13,7 @@ import time
 from playwright.sync_api import expect
 
 from usvstation.geo import RampFrame
+from usvstation.geometry import inflated_radius, position_at
 from usvstation.planning.validate import plan_violations
 from usvstation.scenario import parse_scenario
 
@@ -246,6 +247,25 @@ def test_map_geometry_matches_the_station(page, station):
             assert abs(js_lat - py_lat) < 1e-10 and abs(js_lon - py_lon) < 1e-10
             assert abs(js_x - x) < 1e-6 and abs(js_y - y) < 1e-6
     assert json.dumps(got)  # plain numbers, no NaN
+
+
+def test_map_plan_position_and_inflation_match_the_station(page, station):
+    """map.js's position on a timed plan and eq. 7 radius agree with geometry.py."""
+    open_console(page, station)
+    wps = [{"x": 80.0, "y": 10.0, "t": 0.0}, {"x": 40.0, "y": 0.0, "t": 20.0},
+           {"x": 40.0, "y": 0.0, "t": 20.0}, {"x": 0.0, "y": -3.5, "t": 31.5}]
+    times = [-5.0, 0.0, 7.3, 20.0, 25.0, 31.5, 40.0]
+    scenario = {"vessel": {"length": 1.7, "compensation_radius": 0.8}}
+    got = page.evaluate("""async ([wps, times, scenario]) => {
+        const { planPositionAt, inflatedRadius } = await import('/assets/map.js');
+        return [times.map((t) => { const p = planPositionAt(wps, t); return [p.x, p.y]; }),
+                inflatedRadius(scenario, { radius: 3.25 })];
+    }""", [wps, times, scenario])
+    ts, xs, ys = ([w[k] for w in wps] for k in ("t", "x", "y"))
+    for t, (js_x, js_y) in zip(times, got[0], strict=True):
+        py_x, py_y = position_at(ts, xs, ys, t)
+        assert abs(js_x - py_x) < 1e-9 and abs(js_y - py_y) < 1e-9, t
+    assert got[1] == inflated_radius(3.25, 1.7, 0.8)
 
 
 def test_api_docs_render_in_the_browser_with_the_network_blocked(browser, station, artifacts):

@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 
 from usvstation.control import PID, Autopilot, TrackingLoop, allocate
 from usvstation.dynamics import Environment, ThrustCommand, Vessel, VesselState, otter, trimaran
-from usvstation.guidance.angles import angle_diff
+from usvstation.geometry import angle_diff
 from usvstation.guidance.los import AVLOSGuidance
 from usvstation.guidance.trajectory import Trajectory
 

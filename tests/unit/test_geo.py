@@ -7,7 +7,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from usvstation.geo import RampFrame, wrap_deg
+from usvstation.geo import RampFrame
+from usvstation.geometry import wrap_deg
 
 frames = st.builds(
     RampFrame,

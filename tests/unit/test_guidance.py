@@ -10,13 +10,9 @@ from hypothesis import assume, given
 from hypothesis import strategies as st
 
 from usvstation.dynamics import Environment, VesselState, WaveField, otter
-from usvstation.guidance.angles import angle_diff, wrap_angle, wrap_angles
+from usvstation.geometry import angle_diff, cross_track_error, wrap_angle
 from usvstation.guidance.compensation import CompensatedAVLOS, DisturbancePredictor
-from usvstation.guidance.geometry import (
-    circle_segment_intersections,
-    cross_track_error,
-    project_on_segment,
-)
+from usvstation.guidance.geometry import circle_segment_intersections, project_on_segment
 from usvstation.guidance.los import (
     AVLOSGuidance,
     LookaheadTracker,
@@ -45,7 +41,7 @@ def test_wrap_angle_lands_in_range_and_keeps_the_direction(a) -> None:
     assert -math.pi <= w < math.pi
     assert math.cos(w) == pytest.approx(math.cos(a), abs=1e-9)
     assert math.sin(w) == pytest.approx(math.sin(a), abs=1e-9)
-    assert wrap_angles(np.array([a]))[0] == pytest.approx(w)
+    assert wrap_angle(np.array([a]))[0] == pytest.approx(w)
 
 
 @given(angle, angle)

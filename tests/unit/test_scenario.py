@@ -5,6 +5,7 @@ import json
 
 import pytest
 
+from usvstation.geometry import inflated_radius
 from usvstation.scenario import (
     ScenarioError,
     bundled_scenario_dir,
@@ -51,7 +52,8 @@ def test_defaults_fill_optional_sections():
                         "obstacles": [{"x": 20, "y": 0, "radius": 2}]})
     assert (s.goal.x, s.goal.y) == (0.0, 0.0)
     assert s.vessel.turn_max_deg == 60.0 and s.obstacles[0].vx == 0.0
-    assert s.inflated_radius(s.obstacles[0]) == pytest.approx(2 + 1.2 + 1.0)  # eq. 7
+    o, v = s.obstacles[0], s.vessel
+    assert inflated_radius(o.radius, v.length, v.compensation_radius) == pytest.approx(4.2)  # eq. 7
 
 
 @pytest.mark.parametrize(

@@ -12,7 +12,6 @@ from usvstation.viz.view import (
     LAYERS,
     ThreeDView,
     oblique_cylinder,
-    position_at,
     track_position_at,
 )
 
@@ -28,13 +27,6 @@ def test_moving_obstacle_leans_along_its_velocity():
     assert np.allclose(top[:, :2] - bottom[:, :2], [20.0, -10.0], atol=1e-5)
     assert np.allclose(np.hypot(*(bottom[:, :2] - [10.0, 5.0]).T), 2.0, atol=1e-5)
     assert f.max() < len(v) and len(f) == 4 * CIRCLE_SIDES
-
-
-def test_planned_position_is_linear_in_time():
-    assert position_at(WAYPOINTS, -1.0) == (80.0, 10.0)
-    assert position_at(WAYPOINTS, 10.0) == pytest.approx((60.0, 5.0))
-    assert position_at(WAYPOINTS, 25.0) == pytest.approx((20.0, 0.0))
-    assert position_at(WAYPOINTS, 99.0) == (0.0, 0.0)
 
 
 def test_real_position_is_the_last_report_at_or_before_t():

@@ -12,7 +12,6 @@ from usvstation.planning.xyt import (
     closest_approach,
     eq9_coefficients,
     eq9_roots,
-    inflate_radius,
     segments_hit_circles,
 )
 
@@ -20,10 +19,6 @@ from usvstation.planning.xyt import (
 def hit(p0, t0, p1, t1, c, v, r):
     """One segment against one circle; positions as (x, y)."""
     return bool(segments_hit_circles(p0[0], p0[1], t0, p1[0], p1[1], t1, c[0], c[1], v[0], v[1], r))
-
-
-def test_inflation_eq7():
-    assert inflate_radius(3.0, 1.2, 1.0) == pytest.approx(5.2)
 
 
 def test_crossing_a_static_circle_hits():

@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 
+from usvstation.geometry import angle_diff
 from usvstation.scenario import Scenario
 
 STEP_M = 0.02  # largest relative movement between two samples, m
@@ -78,13 +79,12 @@ def check_plan(plan: dict[str, Any], scenario: Scenario,
         u0 = ground[0] / max(float(np.hypot(*ground[0])), 1e-12)
         w0 = wps[0]["speed"] * u0 - cur
         hull0 = math.atan2(w0[1], w0[0])
-        d = math.degrees(abs(math.remainder(hull0 - math.radians(scenario.start.heading_deg),
-                                            2 * math.pi)))
+        d = math.degrees(abs(angle_diff(hull0, math.radians(scenario.start.heading_deg))))
         rep.first_turn_deg = d
         if d > v.turn_max_deg + ANGLE_TOL_DEG:
             rep.problems.append(f"first turn {d:.2f} deg above {v.turn_max_deg}")
     if scenario.kind == "recovery":
-        off = math.degrees(abs(math.remainder(course[-1] - math.pi, 2 * math.pi)))
+        off = math.degrees(abs(angle_diff(course[-1], math.pi)))
         if off > 10.0 + ANGLE_TOL_DEG:
             rep.problems.append(f"arrives {off:.2f} deg off the ramp axis")
     if scenario.obstacles:

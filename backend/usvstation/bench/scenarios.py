@@ -13,6 +13,7 @@ import math
 
 import numpy as np
 
+from usvstation.geometry import inflated_radius
 from usvstation.scenario import Obstacle, Scenario, ScenarioError, Vessel, parse_scenario
 
 _ORIGIN = {"lat": 30.5135, "lon": 114.4182, "ramp_bearing_deg": 90.0}
@@ -99,10 +100,11 @@ def _clear_of(
     obstacles: list[dict], points: list[tuple[float, float]], vessel: Vessel
 ) -> list[dict]:
     """Drop obstacles whose inflated circle (eq. 7) covers a point at t = 0, with a 1 m margin."""
-    pad = vessel.length + vessel.compensation_radius + 1.0
+    length, r_c = vessel.length, vessel.compensation_radius
     return [
         o for o in obstacles
-        if all(math.hypot(o["x"] - px, o["y"] - py) > Obstacle(**o).radius + pad
+        if all(math.hypot(o["x"] - px, o["y"] - py)
+               > inflated_radius(Obstacle(**o).radius, length, r_c) + 1.0
                for px, py in points)
     ]
 

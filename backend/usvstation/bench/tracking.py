@@ -38,6 +38,7 @@ from usvstation.dynamics.environment import Environment, Push, WaveField, Wind
 from usvstation.dynamics.kinematic import KinematicBoat
 from usvstation.dynamics.params import VesselParams, otter, trimaran
 from usvstation.dynamics.vessel import ThrustCommand, Vessel, VesselState
+from usvstation.geometry import angle_diff
 from usvstation.guidance.compensation import DisturbancePredictor, DriftModel, EstimatedDrift
 from usvstation.guidance.los import AVLOSGuidance, LOSGuidance
 from usvstation.guidance.observer import DriftObserver, Measurement
@@ -319,7 +320,7 @@ def track_plan(plan: dict[str, Any], method: str, params: VesselParams, env: Env
         k += 1
         if state.x > 0.0 >= new.x:
             w = state.x / (state.x - new.x)
-            dpsi = math.remainder(new.psi - state.psi, 2 * math.pi)
+            dpsi = angle_diff(new.psi, state.psi)
             crossing = (state.y + w * (new.y - state.y), state.psi + w * dpsi,
                         state.t + w * (new.t - state.t))
             break
@@ -336,7 +337,7 @@ def track_plan(plan: dict[str, Any], method: str, params: VesselParams, env: Env
         y, psi, t = crossing
         result["arrival_offset_m"] = round(y, 4)
         result["arrival_heading_err_deg"] = round(
-            math.degrees(math.remainder(psi - math.pi, 2 * math.pi)), 3)
+            math.degrees(angle_diff(psi, math.pi)), 3)
         result["arrival_delay_s"] = round(t - traj.end_time, 3)
     truth = DisturbancePredictor(params, env).drift(vessel.state.psi, vessel.state.u)
     if method == "avlos_comp":
@@ -501,8 +502,8 @@ def hairpins(methods: tuple[str, ...] = ("los", "avlos", "ilos", "alos", "slidin
     rows = []
     for name, pts in HAIRPINS.items():
         traj = _timed(pts, speed)
-        path_turn = sum(abs(math.degrees(math.remainder(
-            traj.segment_heading(i + 1) - traj.segment_heading(i), 2 * math.pi)))
+        path_turn = sum(abs(math.degrees(angle_diff(
+            traj.segment_heading(i + 1), traj.segment_heading(i))))
             for i in range(traj.segment_count - 1))
         for current in currents:
             env = Environment.with_current(current, math.pi / 2)
@@ -572,7 +573,7 @@ def _fly(route: tuple[tuple[float, float], ...], params: VesselParams, controlle
     while not guide.finished and prev.t < traj.end_time + timeout:
         state = loop.step(env)
         length += math.hypot(state.x - prev.x, state.y - prev.y)
-        tta += abs(math.remainder(state.psi - prev.psi, 2 * math.pi))
+        tta += abs(angle_diff(state.psi, prev.psi))
         xtes.append(_xte(state.x, state.y, route))
         prev = state
     return {"controller": controller, "finished": bool(guide.finished),

@@ -20,7 +20,7 @@ from usvstation.control.allocation import allocate
 from usvstation.control.pid import PID
 from usvstation.dynamics.params import VesselParams
 from usvstation.dynamics.vessel import ThrustCommand, VesselState
-from usvstation.guidance.angles import angle_diff, wrap_angle
+from usvstation.geometry import angle_diff, wrap_angle
 
 HEADING_INTEGRAL_ZONE = math.radians(5.0)
 SPEED_INTEGRAL_ZONE = 1.0  # m/s

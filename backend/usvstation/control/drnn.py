@@ -33,7 +33,7 @@ import numpy as np
 from usvstation.control.autopilot import Autopilot, AutopilotGains
 from usvstation.dynamics.params import VesselParams
 from usvstation.dynamics.vessel import VesselState
-from usvstation.guidance.angles import angle_diff
+from usvstation.geometry import angle_diff
 
 HIDDEN = 4
 LEARNING_RATE = 0.01

@@ -27,7 +27,7 @@ import math
 from usvstation.control.autopilot import Autopilot, AutopilotGains
 from usvstation.dynamics.params import VesselParams
 from usvstation.dynamics.vessel import VesselState
-from usvstation.guidance.angles import angle_diff
+from usvstation.geometry import angle_diff
 
 SURGE_GAMMA = (60.0, 1.0, 0.0)  # Table IV, MRAC 1
 HEADING_GAMMA = (100.0, 0.0, 1400.0)  # Table IV, MRAC 2

@@ -17,13 +17,9 @@ import numpy as np
 
 from usvstation.dynamics.environment import Environment
 from usvstation.dynamics.params import VesselParams
+from usvstation.geometry import wrap_angle
 
 MAX_STEP = 0.05  # s: the model is integrated at 20 Hz or faster
-
-
-def wrap_angle(angle: float) -> float:
-    """`angle` wrapped to [-pi, pi) (like guidance.angles; dynamics imports no guidance)."""
-    return (angle + math.pi) % (2.0 * math.pi) - math.pi
 
 
 @dataclass(frozen=True)

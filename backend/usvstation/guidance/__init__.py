@@ -6,7 +6,7 @@ paper 002 Table III (sliding curve); Fossen and Lekkas 2017 (ILOS), Fossen 2023
 (ALOS). See docs/tracking.md.
 """
 
-from usvstation.guidance.angles import angle_diff, wrap_angle, wrap_angles
+from usvstation.geometry import angle_diff, wrap_angle
 from usvstation.guidance.compensation import (
     CompensatedAVLOS,
     DisturbancePredictor,
@@ -48,5 +48,4 @@ __all__ = [
     "avlos_speed",
     "limit_correction",
     "wrap_angle",
-    "wrap_angles",
 ]

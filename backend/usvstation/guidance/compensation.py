@@ -30,7 +30,7 @@ from dataclasses import dataclass, replace
 
 from usvstation.dynamics.environment import Environment, wave_drift_force, wind_force
 from usvstation.dynamics.params import VesselParams
-from usvstation.guidance.angles import angle_diff, wrap_angle
+from usvstation.geometry import angle_diff, wrap_angle
 from usvstation.guidance.los import (
     AVLOSGuidance,
     GuidanceCommand,

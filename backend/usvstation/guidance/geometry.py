@@ -38,11 +38,3 @@ def project_on_segment(px: float, py: float, ax: float, ay: float, bx: float, by
     s = ((px - ax) * dx + (py - ay) * dy) / a
     return min(max(s, 0.0), 1.0)
 
-
-def cross_track_error(px: float, py: float, ax: float, ay: float, bx: float, by: float) -> float:
-    """Signed distance of P from the line A->B, positive to its left."""
-    dx, dy = bx - ax, by - ay
-    length = math.hypot(dx, dy)
-    if length == 0.0:
-        return math.hypot(px - ax, py - ay)
-    return (dx * (py - ay) - dy * (px - ax)) / length

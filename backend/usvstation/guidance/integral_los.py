@@ -25,8 +25,7 @@ from __future__ import annotations
 
 import math
 
-from usvstation.guidance.angles import wrap_angle
-from usvstation.guidance.geometry import cross_track_error
+from usvstation.geometry import cross_track_error, wrap_angle
 from usvstation.guidance.los import AVLOSGuidance, GuidanceCommand, Pose
 from usvstation.guidance.trajectory import Trajectory
 

@@ -24,7 +24,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from usvstation.guidance.angles import angle_diff, wrap_angle
+from usvstation.geometry import angle_diff, wrap_angle
 from usvstation.guidance.compensation import EstimatedDrift
 from usvstation.guidance.los import GuidanceCommand, Pose, check_pose
 

@@ -13,6 +13,8 @@ from typing import Any
 
 import numpy as np
 
+from usvstation.geometry import position_at
+
 
 @dataclass(frozen=True, eq=False)
 class Trajectory:
@@ -132,9 +134,8 @@ class Trajectory:
 
     def position_at(self, t: float | np.ndarray) -> np.ndarray:
         """Desired position at time(s) t; held at the ends outside [start, end]."""
-        tt = np.asarray(t, dtype=float)
-        x = np.interp(tt, self.times, self.points[:, 0])
-        y = np.interp(tt, self.times, self.points[:, 1])
+        x, y = position_at(self.times, self.points[:, 0], self.points[:, 1],
+                           np.asarray(t, dtype=float))
         return np.stack([x, y], axis=-1)
 
     def velocity_at(self, t: float) -> tuple[float, float]:

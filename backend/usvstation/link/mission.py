@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 
 from usvstation.geo import RampFrame
+from usvstation.geometry import CDEG, CM, E7, MS
 from usvstation.link.wire import MAX_MISSION_ITEMS, item_crc32
 
 LAT_MAX_E7 = 90 * 10**7
@@ -38,11 +39,12 @@ class Origin:
 
     @classmethod
     def from_frame(cls, frame: RampFrame) -> Origin:
-        return cls(round(frame.lat * 1e7), round(frame.lon * 1e7),
-                   round(frame.ramp_bearing_deg % 360.0 * 100) % 36000)
+        return cls(E7.to_wire(frame.lat), E7.to_wire(frame.lon),
+                   CDEG.to_wire(frame.ramp_bearing_deg))
 
     def to_frame(self) -> RampFrame:
-        return RampFrame(self.lat_e7 / 1e7, self.lon_e7 / 1e7, self.ramp_bearing_cdeg / 100)
+        return RampFrame(E7.from_wire(self.lat_e7), E7.from_wire(self.lon_e7),
+                         CDEG.from_wire(self.ramp_bearing_cdeg))
 
 
 @dataclass(frozen=True)
@@ -163,8 +165,8 @@ def mission_from_plan(waypoints: Sequence[Mapping[str, Any]], frame: RampFrame,
     compass_heading = np.atleast_1d(frame.heading_to_compass_deg(heading_deg))
     compass_course = np.atleast_1d(frame.heading_to_compass_deg(course))
     items = tuple(
-        MissionItem(mission_id, i, round(la * 1e7), round(lo * 1e7), round(tt * 1000),
-                    round(sp * 100), round(cc * 100) % 36000, round(hd * 100) % 36000)
+        MissionItem(mission_id, i, E7.to_wire(la), E7.to_wire(lo), MS.to_wire(tt),
+                    CM.to_wire(sp), CDEG.to_wire(cc), CDEG.to_wire(hd))
         for i, (la, lo, tt, sp, cc, hd) in enumerate(
             zip(np.atleast_1d(lat), np.atleast_1d(lon), t, speed, compass_course,
                 compass_heading, strict=True))
@@ -178,20 +180,21 @@ def plan_from_mission(mission: Mission, frame: RampFrame | None = None) -> list[
         if mission.origin is None:
             raise MissionError("plan_from_mission needs a frame for a mission without origin")
         frame = mission.origin.to_frame()
-    lat = np.array([it.lat / 1e7 for it in mission.items])
-    lon = np.array([it.lon / 1e7 for it in mission.items])
+    lat = E7.from_wire(np.array([it.lat for it in mission.items]))
+    lon = E7.from_wire(np.array([it.lon for it in mission.items]))
     x, y = frame.to_ramp(lat, lon)
-    heading = frame.compass_to_heading_deg([it.heading_cdeg / 100 for it in mission.items])
+    cdeg = [it.heading_cdeg for it in mission.items]
+    heading = frame.compass_to_heading_deg(CDEG.from_wire(cdeg))
     return [
-        {"x": float(x[i]), "y": float(y[i]), "t": it.t_ms / 1000, "speed": it.speed_cms / 100,
-         "heading_deg": float(heading[i])}
+        {"x": float(x[i]), "y": float(y[i]), "t": MS.from_wire(it.t_ms),
+         "speed": CM.from_wire(it.speed_cms), "heading_deg": float(heading[i])}
         for i, it in enumerate(mission.items)
     ]
 
 
 def distance_m(lat_e7: int, lon_e7: int, lat2_e7: int, lon2_e7: int) -> float:
     """Great-circle distance between two wire positions (haversine, WGS-84 mean radius)."""
-    p1, p2 = math.radians(lat_e7 / 1e7), math.radians(lat2_e7 / 1e7)
-    dp, dl = p2 - p1, math.radians((lon2_e7 - lon_e7) / 1e7)
+    p1, p2 = math.radians(E7.from_wire(lat_e7)), math.radians(E7.from_wire(lat2_e7))
+    dp, dl = p2 - p1, math.radians(E7.from_wire(lon2_e7 - lon_e7))
     a = math.sin(dp / 2) ** 2 + math.cos(p1) * math.cos(p2) * math.sin(dl / 2) ** 2
     return 2 * 6371008.8 * math.asin(min(1.0, math.sqrt(a)))

@@ -22,6 +22,7 @@ from collections import Counter, deque
 from dataclasses import dataclass, field
 from typing import Any
 
+from usvstation.geometry import CDEG, CM, E7, MS
 from usvstation.link import wire
 from usvstation.link.mavlink import usv_recovery as mav
 from usvstation.link.mission import Mission, MissionItem
@@ -731,18 +732,19 @@ class StationProtocol:
         get = self.latest.get
         gps, att = get("GPS_RAW_INT"), get("ATTITUDE")
         sysst, thr, nav = get("SYS_STATUS"), get("USV_THRUST"), get("NAV_CONTROLLER_OUTPUT")
-        vn, ve = gp.vx / 100, gp.vy / 100
+        vn, ve = CM.from_wire(gp.vx), CM.from_wire(gp.vy)
         from math import atan2, degrees, hypot
 
         speed = hypot(vn, ve)  # current, unlike VFR_HUD (1 Hz)
         course = degrees(atan2(ve, vn)) % 360 if hypot(vn, ve) > 0.01 else \
-            (gp.hdg / 100 if gp.hdg != 0xFFFF else 0.0)
+            (CDEG.from_wire(gp.hdg) if gp.hdg != 0xFFFF else 0.0)
         rep = self._report_at(gp.time_boot_ms)
         state = rep.state if rep is not None else "IDLE"
         return Telemetry(
-            time_s=gp.time_boot_ms / 1000, lat=gp.lat / 1e7, lon=gp.lon / 1e7,
+            time_s=MS.from_wire(gp.time_boot_ms), lat=E7.from_wire(gp.lat),
+            lon=E7.from_wire(gp.lon),
             speed=round(speed, 3), course_deg=round(course, 2),
-            heading_deg=gp.hdg / 100 if gp.hdg != 0xFFFF else 0.0,
+            heading_deg=CDEG.from_wire(gp.hdg) if gp.hdg != 0xFFFF else 0.0,
             yaw_rate_dps=round(degrees(att.yawspeed), 3) if att is not None else 0.0,
             fix_type=gps.fix_type if gps is not None else 0,
             satellites=gps.satellites_visible if gps is not None else 0,

@@ -20,6 +20,7 @@ import time
 from collections.abc import AsyncIterator, Awaitable, Callable
 from typing import Any
 
+from usvstation.geometry import CDEG, CM, MS
 from usvstation.link.mission import Mission
 from usvstation.link.protocol import (
     CommandOutcome,
@@ -221,8 +222,8 @@ class BoatLink:
     async def guide(self, heading_deg: float, speed: float, valid_s: float) -> None:
         """Shore-assisted setpoint: compass heading (deg), speed (m/s), for valid_s seconds."""
         try:
-            self.protocol.send_guidance(round(heading_deg * 100) % 36000, round(speed * 100),
-                                        round(valid_s * 1000))
+            self.protocol.send_guidance(CDEG.to_wire(heading_deg), CM.to_wire(speed),
+                                        MS.to_wire(valid_s))
         except RuntimeError as exc:
             raise LinkError(str(exc)) from None
         await self._flush()

@@ -26,6 +26,10 @@ from enum import StrEnum
 
 import numpy as np
 
+from usvstation.geometry import angle_diff
+from usvstation.geometry import wrap_180 as wrap180
+from usvstation.geometry import wrap_deg as wrap360
+
 EPS = 1e-9
 
 
@@ -45,16 +49,6 @@ def velocity(course_deg: float, speed: float) -> np.ndarray:
     """ENU velocity of a compass course (deg) and speed (m/s)."""
     c = math.radians(course_deg)
     return np.array([speed * math.sin(c), speed * math.cos(c)])
-
-
-def wrap360(a: float) -> float:
-    return a % 360.0
-
-
-def wrap180(a: float) -> float:
-    """Into (-180, 180]."""
-    r = (a + 180.0) % 360.0 - 180.0
-    return 180.0 if r == -180.0 else r
 
 
 def bearing_deg(frm: np.ndarray, to: np.ndarray) -> float:
@@ -268,7 +262,7 @@ def compliance(track: np.ndarray, times: np.ndarray, targets: np.ndarray, target
                 continue
             rng = float(np.hypot(*(pt - track[k])))
             if side is None:
-                dh = math.degrees(math.remainder(heading[k] - h0, 2 * math.pi))
+                dh = math.degrees(angle_diff(heading[k], h0))
                 if abs(dh) >= action_deg:
                     side = "starboard" if dh < 0 else "port"
                     rng_at = rng

@@ -9,6 +9,7 @@ from typing import Any
 import numpy as np
 from scipy import ndimage
 
+from usvstation.geometry import inflated_radius
 from usvstation.planning.encoding import GeneLayout, InfeasibleProblem
 from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.planning.iga import IGAResult, run_iga
@@ -117,7 +118,7 @@ def clearance_margins(scenario: Scenario, fallback: bool) -> list[tuple[float, s
     than eq. 7's margin says so in its warnings and `metrics.margin_kept`.
     """
     v = scenario.vessel
-    full = v.length + v.compensation_radius
+    full = inflated_radius(0.0, v.length, v.compensation_radius)  # eq. 7's margin
     levels: list[tuple[float, str | None]] = [(full, None)]
     if fallback:
         least = v.length / 2.0 + MIN_WATER_M
@@ -230,7 +231,7 @@ def scenario_field(scenario: Scenario) -> ObstacleField:
         centre=np.array([[o.x, o.y] for o in obs], dtype=float).reshape(-1, 2),
         velocity=np.array([[o.vx, o.vy] for o in obs], dtype=float).reshape(-1, 2),
         radius=radius,
-        inflated=radius + v.length + v.compensation_radius,
+        inflated=inflated_radius(radius, v.length, v.compensation_radius),
     )
 
 

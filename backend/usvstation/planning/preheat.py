@@ -43,6 +43,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from usvstation.geometry import angle_diff
 from usvstation.planning.encoding import GeneLayout
 from usvstation.planning.fitness import water_speed_bad
 from usvstation.planning.options import IGAOptions
@@ -122,7 +123,7 @@ class _Grower:
         # a boat under way: its course binds the first leg (slope is measured against -x)
         self.start_slope = np.nan
         if problem.start_course is not None:
-            self.start_slope = math.remainder(math.pi - problem.start_course, 2.0 * math.pi)
+            self.start_slope = angle_diff(math.pi, problem.start_course)
 
     def _near_block(self, k: int) -> _Obstacles:
         """Obstacles that can touch a segment ending in block k (k = n_mid: the goal leg)."""

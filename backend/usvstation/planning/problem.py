@@ -13,7 +13,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from usvstation.planning.xyt import ObstacleField, inflate_radius
+from usvstation.geometry import inflated_radius
+from usvstation.planning.xyt import ObstacleField
 from usvstation.scenario import Scenario
 
 
@@ -81,7 +82,7 @@ class Problem:
         velocity = np.array([[o.vx, o.vy] for o in obs], dtype=float).reshape(-1, 2)
         radius = np.array([o.radius for o in obs], dtype=float)
         inflated = (
-            inflate_radius(radius, v.length, v.compensation_radius)
+            inflated_radius(radius, v.length, v.compensation_radius)
             if margin is None else radius + margin
         )
         tm = v.time_margin_s if time_margin_s is None else time_margin_s

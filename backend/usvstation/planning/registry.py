@@ -20,6 +20,7 @@ from typing import Any
 import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
+from usvstation.geometry import inflated_radius
 from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.planning.seeds.common import (
     World,
@@ -79,7 +80,7 @@ def _drive(scenario: Scenario, seed: int, opts: SeedOptions, name: str,
     t0 = time.perf_counter()
     cruise = cruise_speed(scenario, opts.cruise_speed)
     v = scenario.vessel
-    margins = (v.length + v.compensation_radius, v.length)
+    margins = (inflated_radius(0.0, v.length, v.compensation_radius), v.length)  # eq. 7, R_c = 0
     last: str = "no path found"
     full = World.from_scenario(scenario, margins[0])
     gates = recovery_gates(scenario, full) if scenario.kind == "recovery" else [None]

@@ -19,6 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from usvstation.geometry import angle_diff
 from usvstation.planning.options import IGAOptions
 from usvstation.planning.problem import StartState, sweep_moving
 from usvstation.planning.validate import MOVING_START_SPEED, current_vector
@@ -117,7 +118,7 @@ def needs_prefix(scenario: Scenario, opts: IGAOptions) -> bool:
     cx, cy = current_vector(scenario)
     course = start_course(h, s.speed, cx, cy)
     bearing = math.atan2(scenario.goal.y - s.y, scenario.goal.x - s.x)
-    return abs(math.remainder(course - bearing, 2 * math.pi)) > ALIGNED
+    return abs(angle_diff(course, bearing)) > ALIGNED
 
 
 def prefixes(scenario: Scenario, opts: IGAOptions, margin: float) -> list[Prefix]:
@@ -157,20 +158,20 @@ def _steer(scenario: Scenario, opts: IGAOptions, side: float) -> Prefix | None:
         else:
             x_out = None
             target = math.atan2(scenario.goal.y - y, scenario.goal.x - x)
-            if k is not None and abs(math.remainder(k - target, 2 * math.pi)) <= step / 2:
+            if k is not None and abs(angle_diff(k, target)) <= step / 2:
                 break
         if k is None:
             k = target
         elif not courses:
             # the first leg turns the hull (the rule binds the hull, not the course)
             h = math.radians(s.heading_deg)
-            err = math.remainder(_crab(target, water, cx, cy) - h, 2 * math.pi)
+            err = angle_diff(_crab(target, water, cx, cy), h)
             turn = err if abs(err) <= step else (
                 side if abs(err) > math.pi - step else math.copysign(1.0, err)) * step
             first_water = _water_within(h + turn, water, cx, cy, v.speed_min, v.speed_max)
             k = ground_course(h + turn, first_water, cx, cy)
         else:
-            err = math.remainder(target - k, 2 * math.pi)
+            err = angle_diff(target, k)
             if abs(err) <= step:
                 k = target
             else:

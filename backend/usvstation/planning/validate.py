@@ -25,6 +25,7 @@ from typing import Any
 
 import numpy as np
 
+from usvstation.geometry import angle_diff
 from usvstation.scenario import Scenario
 
 TOL = 1e-6
@@ -79,7 +80,7 @@ def plan_violations(plan: dict[str, Any], scenario: Scenario) -> list[str]:
         math.atan2(b["y"] - a["y"], b["x"] - a["x"]) for a, b in itertools.pairwise(wps)
     ]
     for i, (h0, h1) in enumerate(itertools.pairwise(headings)):
-        turn = abs(math.degrees(math.remainder(h1 - h0, 2 * math.pi)))
+        turn = abs(math.degrees(angle_diff(h1, h0)))
         if turn > v.turn_max_deg + 1e-6:
             out.append(f"waypoint {i + 1}: turn {turn:.2f} deg above {v.turn_max_deg}")
     turn0 = first_turn_deg(plan, scenario)
@@ -102,7 +103,7 @@ def plan_violations(plan: dict[str, Any], scenario: Scenario) -> list[str]:
                 out.append(f"segment {i}: hull within {c:.3f} m of obstacles[{j}] when "
                            f"{v.time_margin_s:g} s early or late")
     if scenario.kind == "recovery":
-        arrival = abs(math.degrees(math.remainder(headings[-1] - math.pi, 2 * math.pi)))
+        arrival = abs(math.degrees(angle_diff(headings[-1], math.pi)))
         if arrival > ARRIVAL_TOLERANCE_DEG + 1e-9:
             out.append(f"arrives {arrival:.2f} deg off the ramp axis")
     return out
@@ -124,8 +125,7 @@ def first_turn_deg(plan: dict[str, Any], scenario: Scenario) -> float | None:
     wps = plan["waypoints"]
     course = math.atan2(wps[1]["y"] - wps[0]["y"], wps[1]["x"] - wps[0]["x"])
     hull = _water_heading(course, wps[0]["speed"], current_vector(scenario))
-    return abs(math.degrees(math.remainder(hull - math.radians(scenario.start.heading_deg),
-                                           2 * math.pi)))
+    return abs(math.degrees(angle_diff(hull, math.radians(scenario.start.heading_deg))))
 
 
 def _water_heading(course: float, speed: float, cur: tuple[float, float]) -> float:

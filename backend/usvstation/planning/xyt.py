@@ -74,11 +74,6 @@ class ObstacleField:
         return float(np.min(d - self.radius))
 
 
-def inflate_radius(r_obs: np.ndarray | float, hull_length: float, r_c: float) -> np.ndarray:
-    """R_l = R_obs + D_USV + R_c (paper 000 eq. 7)."""
-    return np.asarray(r_obs, dtype=float) + hull_length + r_c
-
-
 def eq9_coefficients(
     x0: Num, y0: Num, t0: Num, x1: Num, y1: Num, t1: Num,
     cx: Num, cy: Num, vx: Num, vy: Num, r: Num,

@@ -8,6 +8,7 @@ from collections.abc import Callable
 from typing import Any
 
 from usvstation.geo import RampFrame
+from usvstation.geometry import MS
 from usvstation.link.protocol import (
     BoatRebooted,
     BoatReport,
@@ -74,7 +75,7 @@ class LinkHandler:
             },
             "boat": None if rep is None else {
                 "state": rep.state, "mission_id": rep.active_id, "mission_crc32": rep.active_crc32,
-                "uptime_s": rep.uptime_ms / 1000, "boot_id": rep.boot_id,
+                "uptime_s": MS.from_wire(rep.uptime_ms), "boot_id": rep.boot_id,
                 "staging": rep.staging, "staged_id": rep.staged_id,
                 "swap_at_ms": rep.swap_at_ms, "rejected": rep.rejected,
             },

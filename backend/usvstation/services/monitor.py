@@ -23,6 +23,7 @@ from typing import Any
 
 import numpy as np
 
+from usvstation.geometry import MS
 from usvstation.scenario import Scenario, parse_scenario
 from usvstation.services.boat import BoatError, BoatService
 from usvstation.services.hub import LiveHub
@@ -265,7 +266,7 @@ class ReplanService:
             return None
         record["dropped_targets"] = dropped
         # the new plan starts where the boat will be lead_s after this frame: swap there
-        record["swap_at_ms"] = round((float(boat_time) + lead_s) * 1000)
+        record["swap_at_ms"] = MS.to_wire(float(boat_time) + lead_s)
         self._save(record)
         return scenario
 

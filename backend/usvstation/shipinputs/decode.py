@@ -19,20 +19,11 @@ import pynmea2
 from pyais.exceptions import AISBaseException
 from pyais.messages import NMEAMessage
 
-from usvstation.world.model import KNOT, World
+from usvstation.world.model import KNOT, OwnShipReport, World
 
 FRAGMENT_TIMEOUT_S = 10.0  # an AIS message whose fragments do not all arrive in time is bad
 _DIST_UNIT_M = {"N": 1852.0, "K": 1000.0, "S": 1609.344}
 _AIS_POSITION = {1, 2, 3, 18, 19}
-
-
-@dataclass(frozen=True)
-class OwnShipReport:
-    lat: float | None = None
-    lon: float | None = None
-    heading_deg: float | None = None
-    course_deg: float | None = None
-    speed: float | None = None  # m/s over ground
 
 
 @dataclass(frozen=True)

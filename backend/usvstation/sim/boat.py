@@ -24,6 +24,7 @@ from typing import Any
 import numpy as np
 
 from usvstation.geo import RampFrame
+from usvstation.geometry import CDEG, CM, E7, MS
 from usvstation.link import wire
 from usvstation.link.mavlink import usv_recovery as mav
 from usvstation.link.mission import (
@@ -343,7 +344,7 @@ class BoatProtocol:
     def _distance_to(self, it: MissionItem) -> float:
         s = self.vehicle.state
         lat, lon = self.frame.to_geodetic(s.x, s.y)
-        return distance_m(round(float(lat) * 1e7), round(float(lon) * 1e7), it.lat, it.lon)
+        return distance_m(E7.to_wire(float(lat)), E7.to_wire(float(lon)), it.lat, it.lon)
 
     def _mission_ack(self, mission_id: int, seq: int, result: int, stage: int,
                      now: float) -> None:
@@ -470,9 +471,10 @@ class BoatProtocol:
     def _on_guidance(self, g: Any, now: float) -> None:
         if self.state != S_RUNNING or g.valid_ms == 0:
             return
-        heading = math.radians(float(self.frame.compass_to_heading_deg(g.heading_cdeg / 100)))
-        self.vehicle.set_guidance(heading, g.speed_cms / 100)
-        self.guided_until = now + g.valid_ms / 1000
+        compass = CDEG.from_wire(g.heading_cdeg)
+        heading = math.radians(float(self.frame.compass_to_heading_deg(compass)))
+        self.vehicle.set_guidance(heading, CM.from_wire(g.speed_cms))
+        self.guided_until = now + MS.from_wire(g.valid_ms)
 
     def _clear_guidance(self) -> None:
         if self.guided_until is not None:
@@ -481,13 +483,14 @@ class BoatProtocol:
 
     def _waypoints(self, items: tuple[MissionItem, ...]) -> list[Waypoint]:
         """Wire items (geodetic) to the vehicle's world frame (the sim's ramp frame)."""
-        lat = np.array([it.lat for it in items]) / 1e7
-        lon = np.array([it.lon for it in items]) / 1e7
+        lat = E7.from_wire(np.array([it.lat for it in items]))
+        lon = E7.from_wire(np.array([it.lon for it in items]))
         x, y = self.frame.to_ramp(lat, lon)
         heading = np.radians(self.frame.compass_to_heading_deg(
-            np.array([it.heading_cdeg for it in items]) / 100))
-        return [Waypoint(float(x[i]), float(y[i]), it.t_ms / 1000, it.speed_cms / 100,
-                         float(heading[i])) for i, it in enumerate(items)]
+            CDEG.from_wire(np.array([it.heading_cdeg for it in items]))))
+        return [Waypoint(float(x[i]), float(y[i]), MS.from_wire(it.t_ms),
+                         CM.from_wire(it.speed_cms), float(heading[i]))
+                for i, it in enumerate(items)]
 
     # ---- time
     def update(self, now: float) -> None:
@@ -503,7 +506,7 @@ class BoatProtocol:
         target = self.boat_time + dt_link * self.cfg.sim_speed
         while True:  # each timer at its own boat-time instant, in order
             st = self.staging
-            swap_t = st.swap_at_ms / 1000 if st is not None and st.state == ST_VERIFIED \
+            swap_t = MS.from_wire(st.swap_at_ms) if st is not None and st.state == ST_VERIFIED \
                 and st.swap_at_ms else math.inf
             due = min(swap_t, self.next_heartbeat, self.next_telemetry)
             if due > target:
@@ -583,7 +586,7 @@ class BoatProtocol:
         boat_next = min(self.next_telemetry, self.next_heartbeat)
         st = self.staging
         if st is not None and st.state == ST_VERIFIED and st.swap_at_ms:
-            boat_next = min(boat_next, st.swap_at_ms / 1000)
+            boat_next = min(boat_next, MS.from_wire(st.swap_at_ms))
         d = self.last_now + max(0.0, boat_next - self.boat_time) / speed
         if self.linked:
             d = min(d, self.last_rx + self.cfg.failsafe_timeout_s + 1e-3)
@@ -601,7 +604,7 @@ class BoatProtocol:
         e = self.codec.mav
         dx, dy = self.gps.sample(1.0 / self.cfg.telemetry_hz)
         lat, lon = self.frame.to_geodetic(s.x + dx, s.y + dy)
-        lat_e7, lon_e7 = round(float(lat) * 1e7), round(float(lon) * 1e7)
+        lat_e7, lon_e7 = E7.to_wire(float(lat)), E7.to_wire(float(lon))
         compass = self.frame.heading_to_compass_deg
         cog = float(compass(math.degrees(s.course))) % 360
         hdg = float(compass(math.degrees(s.heading))) % 360
@@ -609,7 +612,7 @@ class BoatProtocol:
         yaw = math.radians(hdg)
         yaw = yaw - 2 * math.pi if yaw > math.pi else yaw
         vn, ve = s.speed * math.cos(math.radians(cog)), s.speed * math.sin(math.radians(cog))
-        xte = -s.cross_track_error  # wire: positive left of the track
+        xte = s.cross_track_error  # positive left of the track, as on the wire
         send = self._send
         if full:  # the slower streams: once a second, with the heartbeat
             send(e.attitude_encode(t_ms, 0.0, 0.0, yaw, 0.0, 0.0, -s.yaw_rate), now,
@@ -617,7 +620,7 @@ class BoatProtocol:
             send(e.gps_raw_int_encode(
                 int(self.boat_time * 1e6), self.gps.fix_type, lat_e7, lon_e7, 0,
                 _clamp(round(self.gps.hdop * 100), 0, 0xFFFE), 0xFFFF,
-                _clamp(round(s.speed * 100), 0, 0xFFFE), round(cog * 100) % 36000,
+                _clamp(CM.to_wire(s.speed), 0, 0xFFFE), CDEG.to_wire(cog),
                 self.gps.satellites), now, telemetry=True)
             throttle = _clamp(round(50 * (abs(s.thrust_left) + abs(s.thrust_right))), 0, 100)
             send(e.vfr_hud_encode(s.speed, s.speed, round(hdg) % 360, throttle, 0.0, 0.0), now,
@@ -628,9 +631,9 @@ class BoatProtocol:
                                  _clamp(round(s.thrust_right * 1000), -1000, 1000), xte, 0.0),
              now, telemetry=True)
         send(e.global_position_int_encode(t_ms, lat_e7, lon_e7, 0, 0,
-                                          _clamp(round(vn * 100), -32768, 32767),
-                                          _clamp(round(ve * 100), -32768, 32767), 0,
-                                          round(hdg * 100) % 36000), now, telemetry=True)
+                                          _clamp(CM.to_wire(vn), -32768, 32767),
+                                          _clamp(CM.to_wire(ve), -32768, 32767), 0,
+                                          CDEG.to_wire(hdg)), now, telemetry=True)
 
 
 _FROM_STATION = {

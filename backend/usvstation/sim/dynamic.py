@@ -34,7 +34,7 @@ from usvstation.guidance.compensation import EstimatedDrift
 from usvstation.guidance.observer import DriftObserver, Measurement
 from usvstation.guidance.select import GUIDANCE_METHODS, make_guidance
 from usvstation.guidance.station import StationKeeper
-from usvstation.sim.vehicle import VehicleState, Waypoint, checked_mission, cross_track_error
+from usvstation.sim.vehicle import VehicleState, Waypoint, checked_mission, leg_cross_track
 
 CONTROL_PERIOD = 0.05  # s, autopilot and model
 GUIDANCE_PERIOD = 0.2  # s, AV-LOS (paper 000 sec. 4.2 uses 0.2 s)
@@ -226,6 +226,6 @@ class DynamicVehicle:
             yaw_rate=0.0 if self._phase == "done" else s.r,
             thrust_left=max(-1.0, min(1.0, self._thrust.left / full)),
             thrust_right=max(-1.0, min(1.0, self._thrust.right / full)),
-            waypoint_index=index, cross_track_error=cross_track_error(self._wps, s.x, s.y, index),
+            waypoint_index=index, cross_track_error=leg_cross_track(self._wps, s.x, s.y, index),
             mission_complete=self._complete,
         )

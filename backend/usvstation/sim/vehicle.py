@@ -16,6 +16,8 @@ from typing import Protocol, runtime_checkable
 
 import numpy as np
 
+from usvstation.geometry import angle_diff, cross_track_error, position_at
+
 
 @dataclass(frozen=True)
 class Waypoint:
@@ -42,7 +44,7 @@ class VehicleState:
     thrust_left: float = 0.0  # -1..1 of full thrust
     thrust_right: float = 0.0
     waypoint_index: int = 0  # waypoint being steered to
-    cross_track_error: float = 0.0  # m, positive right of the track
+    cross_track_error: float = 0.0  # m, positive left of the track
     mission_complete: bool = False
 
 
@@ -86,20 +88,15 @@ def checked_mission(waypoints: Sequence[Waypoint]) -> list[Waypoint]:
     return wps
 
 
-def cross_track_error(wps: Sequence[Waypoint], x: float, y: float, i: int) -> float:
-    """Distance of (x, y) from the leg into waypoint i, positive right of the track (m)."""
+def leg_cross_track(wps: Sequence[Waypoint], x: float, y: float, i: int) -> float:
+    """Cross-track error of (x, y) from the leg into waypoint i (m, positive left, as
+    geometry.cross_track_error); 0 before the first leg, past the last, on a zero-length leg."""
     if i == 0 or i >= len(wps):
         return 0.0
     a, b = wps[i - 1], wps[i]
-    dx, dy = b.x - a.x, b.y - a.y
-    length = math.hypot(dx, dy)
-    if length < 1e-9:
+    if math.hypot(b.x - a.x, b.y - a.y) < 1e-9:
         return 0.0
-    return (dy * (x - a.x) - dx * (y - a.y)) / length
-
-
-def _wrap(a: float) -> float:
-    return (a + math.pi) % (2 * math.pi) - math.pi
+    return cross_track_error(x, y, a.x, a.y, b.x, b.y)
 
 
 class KinematicVehicle:
@@ -174,10 +171,8 @@ class KinematicVehicle:
             return wps[0].x, wps[0].y, 0
         if tau >= ts[-1]:
             return wps[-1].x, wps[-1].y, len(wps) - 1
-        i = int(np.searchsorted(ts, tau, side="right"))
-        a, b = wps[i - 1], wps[i]
-        f = (tau - a.t) / (b.t - a.t)
-        return a.x + f * (b.x - a.x), a.y + f * (b.y - a.y), i
+        x, y = position_at(ts, [w.x for w in wps], [w.y for w in wps], tau)
+        return x, y, int(np.searchsorted(ts, tau, side="right"))
 
     def step(self, dt: float) -> None:
         if dt <= 0:
@@ -211,12 +206,12 @@ class KinematicVehicle:
             x += speed * dt * math.cos(heading)
             y += speed * dt * math.sin(heading)
         course = math.atan2(y - s.y, x - s.x) if speed > 1e-6 else s.course
-        yaw_rate = _wrap(heading - s.heading) / dt
+        yaw_rate = angle_diff(heading, s.heading) / dt
         share = speed / self.speed_max
         diff = max(-0.5, min(0.5, yaw_rate))  # turn anticlockwise: right thruster harder
         left = max(-1.0, min(1.0, share - diff)) if speed > 0 else 0.0
         right = max(-1.0, min(1.0, share + diff)) if speed > 0 else 0.0
-        xte = cross_track_error(self._wps, x, y, index)
+        xte = leg_cross_track(self._wps, x, y, index)
         self._state = VehicleState(
             t=s.t + dt, x=x, y=y, heading=heading, speed=speed, course=course,
             yaw_rate=yaw_rate, thrust_left=left, thrust_right=right, waypoint_index=index,

@@ -22,6 +22,7 @@ from typing import Any
 
 import numpy as np
 
+from usvstation.geometry import inflated_radius, position_at
 from usvstation.scenario import Scenario
 
 CIRCLE_SIDES = 32
@@ -59,19 +60,6 @@ def oblique_cylinder(cx: float, cy: float, r: float, vx: float, vy: float, t_end
 def polyline_segments(points: np.ndarray) -> np.ndarray:
     """(N, 3) points to (N - 1, 2, 3) line segments."""
     return np.stack([points[:-1], points[1:]], axis=1).astype(np.float32)
-
-
-def position_at(waypoints: list[dict[str, Any]], t: float) -> tuple[float, float]:
-    """Planned (x, y) at time t: linear in time between waypoints (paper 000 eq. 9)."""
-    ts = [w["t"] for w in waypoints]
-    if t <= ts[0]:
-        return waypoints[0]["x"], waypoints[0]["y"]
-    if t >= ts[-1]:
-        return waypoints[-1]["x"], waypoints[-1]["y"]
-    i = bisect.bisect_right(ts, t)
-    a, b = waypoints[i - 1], waypoints[i]
-    f = (t - a["t"]) / (b["t"] - a["t"]) if b["t"] > a["t"] else 1.0
-    return a["x"] + (b["x"] - a["x"]) * f, a["y"] + (b["y"] - a["y"]) * f
 
 
 def track_position_at(track: list[tuple[float, float, float]], t_scaled: float
@@ -202,7 +190,8 @@ class ThreeDView:
             for handle, vx, vy in self._discs:
                 handle.position = (vx * t, vy * t, z)
             if self.waypoints:
-                x, y = position_at(self.waypoints, t)
+                w = self.waypoints
+                x, y = position_at([p["t"] for p in w], [p["x"] for p in w], [p["y"] for p in w], t)
                 self._planned_marker.position = (x, y, z)
                 self._planned_marker.visible = True
                 lines.append(f"planned: x {x:.1f} m, y {y:.1f} m")
@@ -258,7 +247,8 @@ class ThreeDView:
             node.remove()
         self._obstacle_nodes, self._discs = [], []
         for i, o in enumerate(self.scenario.obstacles):
-            r = self.scenario.inflated_radius(o)
+            r = inflated_radius(o.radius, self.scenario.vessel.length,
+                                self.scenario.vessel.compensation_radius)
             v, f = oblique_cylinder(o.x, o.y, r, o.vx, o.vy, self.horizon_s, self.time_scale)
             color = (230, 120, 60) if o.moving else (150, 90, 60)
             self._obstacle_nodes.append(scene.add_mesh_simple(

@@ -46,14 +46,20 @@ def offset_geodetic(lat: float, lon: float, east: float, north: float) -> tuple[
 
 
 @dataclass(frozen=True)
-class OwnShip:
-    """The mother ship's last reported state; fields unknown so far are None."""
+class OwnShipReport:
+    """A partial own-ship report (GGA: position; HDT: heading; VTG: course, speed)."""
 
     lat: float | None = None
     lon: float | None = None
     heading_deg: float | None = None
     course_deg: float | None = None
-    speed: float | None = None
+    speed: float | None = None  # m/s over ground
+
+
+@dataclass(frozen=True)
+class OwnShip(OwnShipReport):
+    """The mother ship's last reported state; fields unknown so far are None."""
+
     t_fix: float | None = None  # station time of the last position
     t: float | None = None  # station time of the last report of any kind
 

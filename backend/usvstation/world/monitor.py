@@ -26,6 +26,8 @@ from typing import Literal
 
 import numpy as np
 
+from usvstation.geometry import position_at
+
 Level = Literal["advisory", "caution", "warning"]
 LEVELS: tuple[Level, ...] = ("advisory", "caution", "warning")
 Encounter = Literal["head-on", "overtaking-give-way", "overtaking-stand-on",
@@ -176,8 +178,7 @@ def assess(waypoints: np.ndarray, boat: BoatState, targets: list[TargetState],
     remaining = max(0.0, min(float(wt[-1]) - tau, config.horizon_s))
     s = np.arange(0.0, remaining + config.dt_s, config.dt_s)
     s[-1] = min(s[-1], remaining)
-    px = np.interp(tau + s, wt, wx)
-    py = np.interp(tau + s, wt, wy)
+    px, py = position_at(wt, wx, wy, tau + s)
     fade = np.clip(1.0 - s / config.rejoin_s, 0.0, 1.0) if config.rejoin_s > 0 else s * 0.0
     px = px + (boat.x - px[0]) * fade
     py = py + (boat.y - py[0]) * fade

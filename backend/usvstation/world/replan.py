@@ -19,6 +19,7 @@ from typing import Literal
 
 import numpy as np
 
+from usvstation.geometry import inflated_radius
 from usvstation.scenario import MAX_COORD, Environment, Obstacle, Scenario, Start
 from usvstation.world.monitor import Assessment, TargetState
 
@@ -72,7 +73,7 @@ def replan_scenario(base: Scenario, a: Assessment, targets: list[TargetState],
         if max(abs(ox), abs(oy)) > MAX_COORD:
             dropped.append(t.id)  # beyond the scenario's 20 km range
             continue
-        r_l = t.radius + vessel.length + vessel.compensation_radius
+        r_l = inflated_radius(t.radius, vessel.length, vessel.compensation_radius)
         if math.hypot(x - ox, y - oy) < r_l or math.hypot(ox, oy) < r_l:
             dropped.append(t.id)
             continue
@@ -118,7 +119,7 @@ def world_scenario(base: Scenario, targets: list[TargetState],
         if max(abs(t.x), abs(t.y)) > MAX_COORD:
             dropped.append(t.id)  # far beyond the plan: no planning problem holds it
             continue
-        r_l = t.radius + vessel.length + vessel.compensation_radius
+        r_l = inflated_radius(t.radius, vessel.length, vessel.compensation_radius)
         if math.hypot(base.start.x - t.x, base.start.y - t.y) < r_l \
                 or math.hypot(base.goal.x - t.x, base.goal.y - t.y) < r_l:
             dropped.append(t.id)

@@ -15,6 +15,7 @@ from typing import Any
 
 import numpy as np
 
+from usvstation.geometry import inflated_radius
 from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.planning.validate import plan_violations
 from usvstation.planning.xyt import segments_hit_circles
@@ -36,7 +37,7 @@ class World:
     def from_scenario(cls, scenario: Scenario, margin: float | None = None) -> World:
         """Circles inflated by `margin` (default paper 000 eq. 7: D_USV + R_c)."""
         v = scenario.vessel
-        m = v.length + v.compensation_radius if margin is None else margin
+        m = inflated_radius(0.0, v.length, v.compensation_radius) if margin is None else margin
         obs = scenario.obstacles
         arr = np.array([[o.x, o.y, o.vx, o.vy, o.radius] for o in obs], float).reshape(-1, 5)
         return cls(arr[:, 0], arr[:, 1], arr[:, 2], arr[:, 3], arr[:, 4], arr[:, 4] + m)

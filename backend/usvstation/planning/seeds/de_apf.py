@@ -25,6 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import differential_evolution
 
+from usvstation.geometry import angle_diff
 from usvstation.planning.seeds.common import World
 
 
@@ -141,7 +142,7 @@ def smooth_max_turn(path: np.ndarray, kappa_deg: float, world: World, cruise: fl
         while i < len(pts) - 1:
             a, b, c = pts[i - 1], pts[i], pts[i + 1]
             h1, h2 = math.atan2(*(b - a)[::-1]), math.atan2(*(c - b)[::-1])
-            turn = abs(math.degrees(math.remainder(h2 - h1, 2 * math.pi)))
+            turn = abs(math.degrees(angle_diff(h2, h1)))
             if turn > kappa_deg:
                 arr = np.array(pts[:i])
                 s = float(np.hypot(*np.diff(arr, axis=0).T).sum()) if len(arr) > 1 else 0.0
