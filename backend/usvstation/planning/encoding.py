@@ -22,6 +22,7 @@ that depends on the decoded x.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field
 
@@ -50,6 +51,11 @@ class PathBatch:
 
     def __len__(self) -> int:
         return int(self.x.shape[0])
+
+    def rows(self, sel: slice) -> PathBatch:
+        """The paths of rows `sel`."""
+        return PathBatch(*(getattr(self, f)[sel] for f in (
+            "x", "y", "v", "t", "seg_len", "seg_dt", "seg_dx", "seg_dy")))
 
 
 def timed_paths(x: np.ndarray, y: np.ndarray, v: np.ndarray) -> PathBatch:
@@ -145,8 +151,8 @@ class GeneLayout:
     def n_genes(self) -> int:
         return int(self.gene_bits.shape[0])
 
-    @property
-    def n_bits(self) -> int:
+    @functools.cached_property
+    def n_bits(self) -> int:  # cached: the operators ask for it several times a generation
         return int(self.gene_bits.sum())
 
     @property

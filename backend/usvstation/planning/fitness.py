@@ -35,7 +35,7 @@ from usvstation.planning.problem import Problem
 from usvstation.planning.xyt import Num, hits_from_relative, polyline_hits, relative_positions
 
 _EPS = 1e-9
-CHUNK_ELEMENTS = 1 << 21  # (path, pair) elements per NumPy call: about 16 MB per temporary
+BRUTE_CHUNK = 1 << 18  # elements per eq. 9 pass: 2 MB a temporary
 
 
 @dataclass(frozen=True)
@@ -111,16 +111,19 @@ def collision_matrix(paths: PathBatch, problem: Problem) -> np.ndarray:
 class Evaluator:
     """Eq. 12 for batches of paths of one problem.
 
-    Given the x-range every segment can span (the encoding fixes it: segment
-    s runs between waypoint blocks s-1 and s), static obstacles whose
-    inflated circle cannot reach that range are never tested against it;
-    the remaining (segment, obstacle) pairs are tested exactly with eq. 9.
-    Without ranges every pair is tested.
+    Collisions (eq. 9) are counted exactly per (segment, obstacle) pair.
+    Given the x-range every segment can span (the encoding fixes it:
+    segment s runs between waypoint blocks s-1 and s), static obstacles
+    whose inflated circle cannot reach that range are never tested against
+    it, and the remaining pairs are pruned by the batch's box in x-y-t.
+    Without ranges every pair is tested (in chunks of `BRUTE_CHUNK`
+    elements). Both give the same counts.
     """
 
     def __init__(self, problem: Problem, opts: IGAOptions,
                  segment_x_range: tuple[np.ndarray, np.ndarray] | None = None) -> None:
         self.problem, self.opts = problem, opts
+        self.distance = max(problem.distance, _EPS)
         self.pairs: tuple[np.ndarray, np.ndarray] | None = None
         f = problem.obstacles
         if segment_x_range is not None and f.count:
@@ -133,20 +136,18 @@ class Evaluator:
             self._pair_obs = (col[0][:, 0], col[0][:, 1], col[1][:, 0], col[1][:, 1], r[obs])
 
     def collisions(self, paths: PathBatch) -> np.ndarray:
-        """Number of (segment, obstacle) pairs in collision, per path.
-
-        x-y-t pruning (issue 12): a pair is tested only if the obstacle's
-        inflated circle, swept over the batch's time window of that segment,
-        overlaps the box the batch's segments span in x and y; no pair that
-        could collide is skipped, so the count is exact.
-        """
+        """Number of (segment, obstacle) pairs in collision, per path (exact)."""
         if self.problem.obstacles.count == 0:
             return np.zeros(len(paths), dtype=np.int64)
         if self.pairs is None:
-            return collision_matrix(paths, self.problem).sum(axis=(0, 1))
+            m, (p, n) = self.problem.obstacles.count, paths.x.shape
+            step = max(1, BRUTE_CHUNK // (m * n))  # bounds memory: paths per pass
+            return np.concatenate([
+                collision_matrix(paths.rows(slice(k, k + step)), self.problem).sum(axis=(0, 1))
+                for k in range(0, p, step)])
         seg_all, keep_all = self._pairs_near(paths)
         total = np.zeros(len(paths), dtype=np.int64)
-        step = max(1, CHUNK_ELEMENTS // max(len(paths), 1))  # bounds memory on huge inputs
+        step = max(1, BRUTE_CHUNK // max(len(paths), 1))  # bounds memory on huge inputs
         for k in range(0, seg_all.shape[0], step):
             seg, keep = seg_all[k:k + step], keep_all[k:k + step]
             cx, cy, vx, vy, r = (a[keep] for a in self._pair_obs)
@@ -195,11 +196,11 @@ class Evaluator:
         n_col = self.collisions(paths)
 
         n = paths.x.shape[1]
-        fit_d = paths.seg_len.sum(axis=1) / max(problem.distance, _EPS)
+        fit_d = paths.seg_len.sum(axis=1) / self.distance
         fit_t = paths.t[:, -1] / (n - 1)
         fit_ang = turns.sum(axis=1) / np.pi
         fit_mal = np.abs(paths.y).sum(axis=1) / n
-        dist = max(problem.distance, _EPS)
+        dist = self.distance
         fit_t_norm = paths.t[:, -1] * problem.speed_max / dist
         fit_mal_norm = fit_mal / dist
         t_term, mal_term = (fit_t_norm, fit_mal_norm) if opts.terms == "normalised" \

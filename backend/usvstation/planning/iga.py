@@ -23,6 +23,7 @@ generations.
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -32,6 +33,8 @@ from usvstation.planning.fitness import Evaluation, Evaluator
 from usvstation.planning.options import IGAOptions
 from usvstation.planning.preheat import PreheatReport, preheat, random_levels
 from usvstation.planning.problem import Problem
+
+EVAL_CHUNK = 128  # paths per evaluation pass; the time budget is checked between passes
 
 
 @dataclass
@@ -62,11 +65,16 @@ class _Population:
 
 def run_iga(
     problem: Problem, opts: IGAOptions, layout: GeneLayout | None = None,
-    deadline: float | None = None,
+    deadline: float | None = None, clock: Callable[[], float] = time.perf_counter,
 ) -> IGAResult:
     """Plan with the IGA; deterministic for a given `opts.seed` (unless the `deadline`,
-    a time.perf_counter() value, cuts the run short: stop_reason "time_budget")."""
+    a `clock()` value, cuts the run short: stop_reason "time_budget").
+
+    The budget is checked after every preheating draw and every `EVAL_CHUNK` paths
+    evaluated, so a run overshoots its deadline by at most one such batch.
+    """
     t0 = time.perf_counter()
+    expired = _expiry(deadline, clock)
     rng = np.random.default_rng(opts.seed)
     layout = layout or GeneLayout.build(problem, opts)
     pop_n, n_elite = opts.population, opts.elite_count
@@ -74,19 +82,33 @@ def run_iga(
 
     evaluator = Evaluator(problem, opts, layout.segment_x_range())
 
-    def fitness(codes: np.ndarray) -> np.ndarray:
-        return evaluator(layout.decode_codes(codes)).fitness
+    evaluations = 0
 
-    levels, fresh, report = _foundation(layout, problem, opts, rng, deadline)
+    def fitness(codes: np.ndarray) -> tuple[np.ndarray, bool]:
+        """Eq. 12 of `codes` in chunks, the budget checked after each; rows left out when
+        it runs out keep fitness 0. Returns (fitness, complete)."""
+        nonlocal evaluations
+        out = np.zeros(codes.shape[0])
+        for k in range(0, codes.shape[0], EVAL_CHUNK):
+            part = codes[k:k + EVAL_CHUNK]
+            out[k:k + part.shape[0]] = evaluator(layout.decode_codes(part)).fitness
+            evaluations += part.shape[0]
+            if k + EVAL_CHUNK < codes.shape[0] and expired():
+                return out, False
+        return out, True
+
+    levels, fresh, report = _foundation(layout, problem, opts, rng, expired)
     codes = layout.levels_to_codes(levels)
-    pop = _Population(codes, fitness(codes))
-    evaluations = pop_n
+    first_fit, complete = fitness(codes)
+    pop = _Population(codes, first_fit)
 
     best_codes, best_fit = pop.codes[np.argmax(pop.fit)].copy(), float(pop.fit.max())
     hist_best, hist_elite = [best_fit], [_elite_mean(pop.fit, n_elite)]
     stop, gen = "generations_max", 0
+    if not complete or expired():
+        stop = "time_budget"
     n_newborn = pop_n // 2  # SSIH candidates per generation, sized from the last death toll
-    while gen < opts.generations_max:
+    while gen < opts.generations_max and stop != "time_budget":
         gen += 1
         order = np.argsort(-pop.fit, kind="stable")
         elite = order[:n_elite]
@@ -95,10 +117,9 @@ def run_iga(
         if opts.ssih:
             parents = pop.codes[order[: max(n_elite, 1)]] if best_fit > 0.0 else children[:0]
             newborn, fresh, report = _newborns(
-                layout, problem, opts, rng, parents, fresh, n_newborn, report
+                layout, problem, opts, rng, parents, fresh, n_newborn, report, expired
             )
-        batch_fit = fitness(np.vstack([children, newborn]))
-        evaluations += batch_fit.shape[0]
+        batch_fit, _ = fitness(np.vstack([children, newborn]))
         child_fit, born_fit = batch_fit[: children.shape[0]], batch_fit[children.shape[0] :]
         if opts.ssih:
             n_dead = int(np.count_nonzero(child_fit <= 0.0))
@@ -113,7 +134,7 @@ def run_iga(
         hist_best.append(best_fit)
         hist_elite.append(_elite_mean(pop.fit, n_elite))
         reason = _converged(hist_best, opts)
-        if reason is None and deadline is not None and time.perf_counter() > deadline:
+        if reason is None and expired():
             reason = "time_budget"
         if reason:
             stop = reason
@@ -129,7 +150,7 @@ def run_iga(
 
 def _foundation(
     layout: GeneLayout, problem: Problem, opts: IGAOptions, rng: np.random.Generator,
-    deadline: float | None = None,
+    expired: Callable[[], bool] | None = None,
 ) -> tuple[np.ndarray, np.ndarray, PreheatReport]:
     """Initial population (levels), a stock of fresh preheated paths for SSIH, the report.
 
@@ -142,14 +163,14 @@ def _foundation(
         empty = np.zeros((0, layout.n_genes), dtype=np.int64)
         return random_levels(layout, rng, pop_n), empty, PreheatReport()
     grown, ok, report = preheat(layout, problem, opts, rng, (3 * pop_n) // 2, need=pop_n,
-                                deadline=deadline)
-    if ok.sum() < max(4, pop_n // 4) and (deadline is None or time.perf_counter() < deadline):
+                                expired=expired)
+    if ok.sum() < max(4, pop_n // 4) and not (expired and expired()):
         # hard problem: one more round with many more candidates and draws per waypoint
         harder = opts.model_copy(update={
             "candidates": 4 * opts.candidates, "preheat_retries": 4 * opts.preheat_retries,
         })
         more, ok_more, rep = preheat(layout, problem, harder, rng, 2 * pop_n, need=pop_n,
-                                     deadline=deadline)
+                                     expired=expired)
         report.merge(rep)
         grown, ok = np.vstack([grown, more]), np.concatenate([ok, ok_more])
     grown = grown[ok]
@@ -157,6 +178,13 @@ def _foundation(
     if levels.shape[0] < pop_n:
         levels = np.vstack([levels, random_levels(layout, rng, pop_n - levels.shape[0])])
     return levels, layout.levels_to_codes(fresh), report
+
+
+def _expiry(deadline: float | None, clock: Callable[[], float]) -> Callable[[], bool]:
+    """A test of the time budget: True once `clock()` is past `deadline` (never without one)."""
+    if deadline is None:
+        return lambda: False
+    return lambda: clock() > deadline
 
 
 def _elite_mean(fit: np.ndarray, n_elite: int) -> float:
@@ -217,6 +245,7 @@ def mutate(
 def _newborns(
     layout: GeneLayout, problem: Problem, opts: IGAOptions, rng: np.random.Generator,
     parents: np.ndarray, fresh: np.ndarray, n: int, report: PreheatReport,
+    expired: Callable[[], bool] | None = None,
 ) -> tuple[np.ndarray, np.ndarray, PreheatReport]:
     """SSIH's newborns (codes): mostly local re-initialisations of elite paths, some fresh.
 
@@ -233,7 +262,7 @@ def _newborns(
             pool = [layout.levels_to_codes(random_levels(layout, rng, n))]
         return np.vstack(pool), fresh, report
     if parents.shape[0] == 0 and fresh.shape[0] == 0:
-        grown, ok, rep = preheat(layout, problem, opts, rng, n)
+        grown, ok, rep = preheat(layout, problem, opts, rng, n, expired=expired)
         report.merge(rep)
         fresh = layout.levels_to_codes(grown[ok])
     n_fresh = min(fresh.shape[0], n if parents.shape[0] == 0 else max(1, n // 5))

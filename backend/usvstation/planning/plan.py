@@ -13,6 +13,7 @@ from usvstation.geometry import inflated_radius
 from usvstation.planning.encoding import GeneLayout, InfeasibleProblem
 from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.planning.iga import IGAResult, run_iga
+from usvstation.planning.limits import check_memory
 from usvstation.planning.options import IGAOptions
 from usvstation.planning.problem import Problem, sweep_moving
 from usvstation.planning.smoothing import smooth_path
@@ -33,12 +34,15 @@ def plan_scenario(
     Every plan returned has passed the exact validator (`plan_violations`):
     true hull clearance, first turn, speed through the water, timing margin.
     The run stops at `planner.time_budget_s` with the best valid plan so far.
+    A plan whose memory estimate exceeds the bound raises PlanTooLarge
+    (`limits.check_memory`) before anything large is allocated.
     """
     if planner not in PLANNERS:
         raise ValueError(f"planner: unknown planner {planner!r}; available: {', '.join(PLANNERS)}")
     if seed is not None:
         overrides["seed"] = seed
     opts = scenario.planner_options(**overrides)
+    check_memory(scenario, opts)
     deadline = time.perf_counter() + opts.time_budget_s
     first: tuple[Problem, IGAResult] | None = None
     reasons: list[str] = []
@@ -310,8 +314,9 @@ def enclosing_obstacles(problem: Problem, cell: float = 0.5) -> list[int] | None
     gy = np.arange(lo[1], hi[1], cell)
     xx, yy = np.meshgrid(gx, gy, indexing="ij")
     blocked = np.zeros(xx.shape, dtype=bool)
-    for c, rad in zip(f.centre[static], r, strict=True):
-        blocked |= (xx - c[0]) ** 2 + (yy - c[1]) ** 2 < rad**2
+    boxes = [_cells(c, rad, gx, gy) for c, rad in zip(f.centre[static], r, strict=True)]
+    for c, rad, box in zip(f.centre[static], r, boxes, strict=True):
+        blocked[box] |= (xx[box] - c[0]) ** 2 + (yy[box] - c[1]) ** 2 < rad**2
     labels, _ = ndimage.label(~blocked)
 
     def label_at(p: np.ndarray) -> int:
@@ -323,10 +328,17 @@ def enclosing_obstacles(problem: Problem, cell: float = 0.5) -> list[int] | None
         return None
     ring = ndimage.binary_dilation(labels == goal_label) & blocked
     near = [
-        int(i) for i, c, rad in zip(static, f.centre[static], r, strict=True)
-        if np.any((xx[ring] - c[0]) ** 2 + (yy[ring] - c[1]) ** 2 < rad**2)
+        int(i) for i, c, rad, box in zip(static, f.centre[static], r, boxes, strict=True)
+        if np.any(ring[box] & ((xx[box] - c[0]) ** 2 + (yy[box] - c[1]) ** 2 < rad**2))
     ]
     return near
+
+
+def _cells(c: np.ndarray, rad: float, gx: np.ndarray, gy: np.ndarray) -> tuple[slice, slice]:
+    """The grid cells (a slice of the raster) that a circle's bounding box covers."""
+    i0, i1 = np.searchsorted(gx, [c[0] - rad, c[0] + rad], side="left")
+    j0, j1 = np.searchsorted(gy, [c[1] - rad, c[1] + rad], side="left")
+    return slice(max(int(i0) - 1, 0), int(i1) + 1), slice(max(int(j0) - 1, 0), int(j1) + 1)
 
 
 def _max_turn_deg(headings: np.ndarray) -> float:

@@ -28,13 +28,17 @@ are the fastest the acceleration limit allows, the rest uniform in the
 reachable range.
 
 Only obstacles that can reach a waypoint block's x-range are tested there:
-moving ones always, static ones when their inflated circle overlaps it.
+moving ones always, static ones when their inflated circle overlaps it; of
+those, a draw tests the ones that reach its box in x-y-t, and with 16 or
+more, each individual's candidates only against the ones that reach its own
+box (exact: the same points are kept as by the all-pairs test). Every eq. 9
+pass holds at most `KERNEL_ELEMENTS` elements.
 """
 
 from __future__ import annotations
 
 import math
-import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -49,6 +53,8 @@ from usvstation.planning.xyt import Num, hits_from_relative
 _MAX_SLOPE = math.radians(80.0)  # steepest segment against the x step
 _SPREAD = math.radians(55.0)  # bearing spread of candidates around the aim
 _EPS = 1e-9
+_PAIR_MIN_OBSTACLES = 16  # from this many obstacles on, candidates are paired per individual
+KERNEL_ELEMENTS = 1 << 18  # elements per eq. 9 pass: 2 MB a temporary
 
 
 @dataclass
@@ -133,7 +139,10 @@ class _Grower:
             vx=f.velocity[idx, 0][col], vy=f.velocity[idx, 1][col], r=f.inflated[idx][col],
         )
 
-    def grow(self, count: int) -> tuple[np.ndarray, np.ndarray]:
+    def grow(self, count: int, expired: Callable[[], bool] | None = None,
+             ) -> tuple[np.ndarray, np.ndarray]:
+        """Walk `count` individuals to the goal; (levels, grown). `expired()` is asked
+        before every draw: once it is True no walk is finished."""
         lay = self.layout
         levels = np.zeros((count, lay.n_genes), dtype=np.int64)
         alive = np.ones(count, dtype=bool)
@@ -149,6 +158,9 @@ class _Grower:
             for attempt in range(self.opts.preheat_retries):
                 if pending.size == 0:
                     break
+                if expired is not None and expired():
+                    alive[:] = False
+                    return levels, alive
                 pending = pending[~self._draw(k, walk, pending, levels, wide=attempt > 0)]
             if pending.size:
                 alive[pending] = False
@@ -198,7 +210,7 @@ class _Grower:
             good &= np.abs(slope - slope0) <= prob.turn_max + _EPS
         if prob.current != (0.0, 0.0):
             good &= ~water_speed_bad(x - px, y - py, pv, v, prob)
-        good &= self._free(self.near[k], px, py, pt, x, y, t)
+        good &= self._free(k, px, py, pt, x, y, t)
         if last:
             gx, gy = float(lay.goal[0]), float(lay.goal[1])
             gseg = np.hypot(x - gx, y - gy)
@@ -207,7 +219,7 @@ class _Grower:
             gvl, gv, gt, gok = self._speed(v, t, gseg, gdx / gseg, gdy / gseg)
             if prob.current != (0.0, 0.0):
                 gok &= ~water_speed_bad(gdx, gdy, v, gv, prob)
-            good &= gok & self._free(self.near[k + 1], x, y, t, gx, gy, gt)
+            good &= gok & self._free(k + 1, x, y, t, gx, gy, gt)
 
         placed = good.any(axis=1)
         key = np.where(walk.greedy[idx, None], np.abs(offset), rng.random((n, c)))
@@ -264,25 +276,74 @@ class _Grower:
         v = lay.v_of(vl)
         return vl, v, pt + 2.0 * seg / (pv + v), jlo <= jhi
 
-    def _free(
-        self, obs: _Obstacles, px: Num, py: Num, pt: Num, x: Num, y: Num, t: Num
-    ) -> np.ndarray:
-        """True where the segment misses every inflated obstacle of `obs` (eq. 9)."""
+    def _free(self, k: int, px: Num, py: Num, pt: Num, x: Num, y: Num, t: Num) -> np.ndarray:
+        """True where the segment ending in block k misses every inflated obstacle (eq. 9).
+
+        Only (obstacle, individual) pairs whose boxes meet are tested: the obstacle's
+        circle swept over the individual's time window against the box its candidate
+        segments span (exact pruning, never drops a hit).
+        """
+        obs = self.near[k]
+        shape = np.broadcast_shapes(np.shape(x), np.shape(px))
         if obs.index.size == 0:
-            return np.ones(np.shape(x), dtype=bool)
+            return np.ones(shape, dtype=bool)
         obs = _near_box(obs, px, py, pt, x, y, t)
         if obs.index.size == 0:
-            return np.ones(np.shape(x), dtype=bool)
-        free = np.ones(np.broadcast_shapes(np.shape(x), np.shape(px)), dtype=bool)
-        step = max(1, (1 << 21) // max(free.size, 1))  # bounds memory on huge inputs
-        for k in range(0, obs.index.size, step):
-            part = _Obstacles(*(a[k:k + step] for a in (obs.index, obs.cx, obs.cy, obs.vx,
+            return np.ones(shape, dtype=bool)
+        if obs.index.size < _PAIR_MIN_OBSTACLES or len(shape) != 2:
+            return self._free_all(obs, shape, px, py, pt, x, y, t)
+        return self._free_paired(obs, shape, px, py, pt, x, y, t)
+
+    def _free_all(self, obs: _Obstacles, shape: tuple[int, ...], px: Num, py: Num, pt: Num,
+                  x: Num, y: Num, t: Num) -> np.ndarray:
+        """Every candidate against every obstacle of `obs`, in memory-bounded passes."""
+        free = np.ones(shape, dtype=bool)
+        step = max(1, KERNEL_ELEMENTS // max(free.size, 1))
+        for i in range(0, obs.index.size, step):
+            part = _Obstacles(*(a[i:i + step] for a in (obs.index, obs.cx, obs.cy, obs.vx,
                                                          obs.vy, obs.r)))
             ex0, ey0 = part.relative(px, py, pt)
             ex1, ey1 = part.relative(x, y, t)
             hits = hits_from_relative(ex0, ey0, ex1, ey1, part.r)  # (m, n, C)
             self.report.obstacle_hits[part.index] += hits.sum(axis=(1, 2))
             free &= ~hits.any(axis=0)
+        return free
+
+    def _free_paired(self, obs: _Obstacles, shape: tuple[int, ...], px: Num, py: Num,
+                     pt: Num, x: Num, y: Num, t: Num) -> np.ndarray:
+        """Candidates (n, C) tested only against the obstacles that reach the box of their
+        own individual's segments over its time window, in memory-bounded passes."""
+        def per_row(a: Num, reduce: np.ufunc) -> np.ndarray:
+            width = np.shape(a)[-1] if np.ndim(a) else 1
+            return reduce.reduce(np.broadcast_to(a, (shape[0], width)), axis=1)
+
+        xlo = np.minimum(per_row(px, np.minimum), per_row(x, np.minimum))
+        xhi = np.maximum(per_row(px, np.maximum), per_row(x, np.maximum))
+        ylo = np.minimum(per_row(py, np.minimum), per_row(y, np.minimum))
+        yhi = np.maximum(per_row(py, np.maximum), per_row(y, np.maximum))
+        tlo, thi = per_row(pt, np.minimum), per_row(t, np.maximum)
+        cx, cy, vx, vy, r = (a[:, 0, 0][:, None] for a in (obs.cx, obs.cy, obs.vx, obs.vy,
+                                                             obs.r))
+        near = ((cx + np.maximum(vx * tlo, vx * thi) + r >= xlo)
+                & (cx + np.minimum(vx * tlo, vx * thi) - r <= xhi)
+                & (cy + np.maximum(vy * tlo, vy * thi) + r >= ylo)
+                & (cy + np.minimum(vy * tlo, vy * thi) - r <= yhi))  # (m, n)
+        rows_all, j_all = np.nonzero(near.T)  # pairs sorted by individual
+        free = np.ones(shape, dtype=bool)
+        step = max(1, KERNEL_ELEMENTS // shape[1])  # pairs per pass
+        for i in range(0, rows_all.size, step):
+            row, j = rows_all[i:i + step], j_all[i:i + step]
+            col = (j, slice(None), 0)
+            e = [a if np.ndim(a) == 0 else np.asarray(a)[row] for a in (px, py, pt, x, y, t)]
+            hits = hits_from_relative(
+                e[0] - (obs.cx[col] + obs.vx[col] * e[2]),
+                e[1] - (obs.cy[col] + obs.vy[col] * e[2]),
+                e[3] - (obs.cx[col] + obs.vx[col] * e[5]),
+                e[4] - (obs.cy[col] + obs.vy[col] * e[5]), obs.r[col])  # (pairs, C)
+            self.report.obstacle_hits[obs.index] += np.bincount(
+                j, weights=hits.sum(axis=1), minlength=obs.index.size).astype(np.int64)
+            first = np.flatnonzero(np.r_[True, row[1:] != row[:-1]])
+            free[row[first]] &= ~np.logical_or.reduceat(hits, first, axis=0)
         return free
 
 
@@ -305,7 +366,7 @@ def _near_box(obs: _Obstacles, px: Num, py: Num, pt: Num, x: Num, y: Num, t: Num
 
 def preheat(
     layout: GeneLayout, problem: Problem, opts: IGAOptions, rng: np.random.Generator,
-    count: int, need: int | None = None, deadline: float | None = None,
+    count: int, need: int | None = None, expired: Callable[[], bool] | None = None,
 ) -> tuple[np.ndarray, np.ndarray, PreheatReport]:
     """Grow `count` individuals; returns (levels (count, G), ok (count,), report).
 
@@ -321,12 +382,12 @@ def preheat(
     for _ in range(opts.preheat_restarts + 1):
         if todo.size == 0 or ok.sum() >= need:
             break
-        if deadline is not None and time.perf_counter() > deadline:
-            break
-        lv, good = grower.grow(todo.size)
+        lv, good = grower.grow(todo.size, expired)
         levels[todo[good]] = lv[good]
         ok[todo[good]] = True
         todo = todo[~good]
+        if expired is not None and expired():
+            break
     report.produced = int(ok.sum())
     return levels, ok, report
 

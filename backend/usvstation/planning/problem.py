@@ -152,13 +152,11 @@ def sweep_moving(
     moving = speed > 0.0
     if margin_s <= 0.0 or not moving.any():
         return centre, velocity, radius, inflated, source
-    spacing = inflated / 2.0
     sweep = margin_s * speed
     # a slow drifter (sweep within half its radius) stays one circle, grown by the sweep
     single = moving & (sweep <= 0.5 * inflated)
     inflated = np.where(single, inflated + sweep, inflated)
-    chain = moving & ~single
-    copies = np.where(chain, np.ceil(2.0 * sweep / spacing).astype(np.int64) + 1, 1)
+    copies = sweep_copies(speed, inflated, margin_s)
     src = np.repeat(source, copies)
     first = np.repeat(np.cumsum(copies) - copies, copies)
     k = np.arange(src.shape[0]) - first
@@ -168,6 +166,15 @@ def sweep_moving(
     infl = np.sqrt(inflated[src] ** 2 + (gap / 2.0) ** 2)
     new_centre = centre[src] + velocity[src] * shift[:, None]
     return new_centre, velocity[src], radius[src], infl, src
+
+
+def sweep_copies(speed: np.ndarray, inflated: np.ndarray, margin_s: float) -> np.ndarray:
+    """Circles `sweep_moving` puts in place of each obstacle (1 for a static one or a slow
+    drifter, whose radius then already includes the sweep)."""
+    sweep = margin_s * speed
+    chain = (speed > 0.0) & (sweep > 0.5 * inflated) & (margin_s > 0.0)
+    return np.where(chain, np.ceil(2.0 * sweep / np.where(chain, inflated / 2.0, 1.0)), 0.0
+                    ).astype(np.int64) + 1
 
 
 def _rotation(angle: float) -> np.ndarray:

@@ -167,3 +167,4 @@ def closest_approach(
         s = np.where(dd > 0.0, -(ex * dx + ey * dy) / dd, 0.0)
     s = np.clip(s, 0.0, 1.0)
     return np.hypot(ex + s * dx, ey + s * dy)
+
