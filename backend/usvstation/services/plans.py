@@ -32,6 +32,7 @@ from multiprocessing.process import BaseProcess
 from typing import Any
 
 from usvstation.planning.errors import NoFeasiblePlan
+from usvstation.planning.limits import PlanTooLarge
 from usvstation.runtime import tune_allocator
 from usvstation.scenario import Scenario, scenario_at
 from usvstation.services.hub import LiveHub
@@ -156,7 +157,7 @@ def worker_main(conn: Connection, parent_pid: int, memory_mb: int) -> None:
             return
         try:
             reply: tuple = ("done", plan_in_worker(*request))
-        except NoFeasiblePlan as exc:
+        except (NoFeasiblePlan, PlanTooLarge) as exc:  # PlanTooLarge: the 500 MB bound
             reply = ("failed", str(exc))
         except MemoryError:
             reply = ("failed", f"the plan needed more than the worker's {memory_mb} MB "
