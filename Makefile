@@ -41,6 +41,7 @@ test-fast: setup
 
 lint: setup
 	$(BIN)/ruff check backend tests
+	$(BIN)/lint-imports --no-cache
 
 bench: setup
 	$(BIN)/usv-station bench planner --json

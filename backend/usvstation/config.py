@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import enum
 import ipaddress
 import os
 import secrets
 import socket
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Literal
 
@@ -13,6 +15,31 @@ from pydantic import Field, field_validator
 from pydantic_settings import BaseSettings, SettingsConfigDict
 
 MIN_TOKEN_LENGTH = 16
+
+
+class Role(enum.IntEnum):
+    VIEWER = 1
+    OPERATOR = 2
+
+
+@dataclass(frozen=True)
+class Tokens:
+    """The operator token ('' turns authentication off) and the optional viewer token."""
+
+    operator: str
+    viewer: str | None = None
+
+    def role(self, given: str | None) -> Role | None:
+        """The role `given` grants, None for no or a wrong token."""
+        if not self.operator:
+            return Role.OPERATOR  # authentication off (loopback only, see config.resolve_token)
+        if given is None:
+            return None
+        if secrets.compare_digest(given.encode(), self.operator.encode()):
+            return Role.OPERATOR
+        if self.viewer and secrets.compare_digest(given.encode(), self.viewer.encode()):
+            return Role.VIEWER
+        return None
 
 
 class Settings(BaseSettings):

@@ -9,8 +9,7 @@ import time
 from collections import deque
 from typing import Any
 
-from usvstation.api.auth import Tokens
-from usvstation.config import ExposureError, Settings, resolve_token
+from usvstation.config import ExposureError, Settings, Tokens, resolve_token
 from usvstation.link.protocol import BoatReport
 from usvstation.scenario import Origin, Scenario, bundled_scenario_dir, parse_scenario
 from usvstation.services.alerts import LinkAlerts

@@ -9,9 +9,9 @@ from hypothesis import strategies as st
 
 from usvstation.bench.scenarios import random_transit
 from usvstation.planning.encoding import GeneLayout, InfeasibleProblem, timed_paths
-from usvstation.planning.options import IGAOptions
 from usvstation.planning.problem import Problem
 from usvstation.scenario import load_scenario, parse_scenario
+from usvstation.scenario.options import IGAOptions
 
 
 def layout_of(scenario, **opts):

@@ -7,9 +7,9 @@ import pytest
 
 from usvstation.planning.encoding import timed_paths
 from usvstation.planning.fitness import Evaluator, evaluate
-from usvstation.planning.options import IGAOptions
 from usvstation.planning.problem import Problem
 from usvstation.scenario import parse_scenario
+from usvstation.scenario.options import IGAOptions
 
 OPTS = IGAOptions(terms="paper", weight_b=0.5, weight_d=0.5)  # eq. 12 in the paper's units
 

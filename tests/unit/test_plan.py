@@ -124,7 +124,7 @@ def test_reduced_clearance_fallback_is_reported():
 
 @pytest.mark.parametrize("ablation", ["EG2", "EG4"])
 def test_ablations_still_plan_validly(ablation):
-    from usvstation.planning.options import IGAOptions
+    from usvstation.scenario.options import IGAOptions
 
     scenario = load_scenario("case1")
     overrides = IGAOptions.ablation(ablation).model_dump(exclude_defaults=True)
@@ -135,7 +135,7 @@ def test_ablations_still_plan_validly(ablation):
 def test_eg1_never_calls_the_preheater(monkeypatch):
     """EG1 is the IGA without any preheating: not at the start, not for SSIH's newborns."""
     from usvstation.planning import iga
-    from usvstation.planning.options import IGAOptions
+    from usvstation.scenario.options import IGAOptions
 
     def no_preheat(*_args, **_kwargs):
         raise AssertionError("EG1 called the preheater")

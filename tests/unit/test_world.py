@@ -9,8 +9,8 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from usvstation.geo import RampFrame
+from usvstation.scenario.ships import LeverArm
 from usvstation.world.model import World, WorldConfig, compass_to_enu, offset_geodetic
-from usvstation.world.ships import LeverArm
 
 LAT, LON = 30.5, 122.0
 

@@ -13,41 +13,15 @@ check it again, so routers of other modules reuse them:
 
 from __future__ import annotations
 
-import enum
-import secrets
 from collections.abc import Mapping
-from dataclasses import dataclass
 
 from fastapi import HTTPException, Request
 from fastapi.security import HTTPBearer
 
+from usvstation.config import Role, Tokens
+
 COOKIE = "usv_token"
 _bearer = HTTPBearer(auto_error=False, description="the operator or viewer token")
-
-
-class Role(enum.IntEnum):
-    VIEWER = 1
-    OPERATOR = 2
-
-
-@dataclass(frozen=True)
-class Tokens:
-    """The operator token ('' turns authentication off) and the optional viewer token."""
-
-    operator: str
-    viewer: str | None = None
-
-    def role(self, given: str | None) -> Role | None:
-        """The role `given` grants, None for no or a wrong token."""
-        if not self.operator:
-            return Role.OPERATOR  # authentication off (loopback only, see config.resolve_token)
-        if given is None:
-            return None
-        if secrets.compare_digest(given.encode(), self.operator.encode()):
-            return Role.OPERATOR
-        if self.viewer and secrets.compare_digest(given.encode(), self.viewer.encode()):
-            return Role.VIEWER
-        return None
 
 
 def token_from_headers(headers: Mapping[str, str]) -> str | None:

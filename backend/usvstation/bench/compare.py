@@ -229,7 +229,9 @@ def run_compare(planners: list[str] | None = None, families: list[str] | None = 
     if plots is not None:
         from usvstation.bench.compare_plots import write_plots
 
-        result["plots"] = write_plots(rows, plots)
+        scenarios = {sc.name: sc for fam in {r["family"] for r in rows}
+                     for sc in family_scenarios(fam, hidden=0, dense_maps=1)}
+        result["plots"] = write_plots(rows, plots, scenarios)
     return result
 
 

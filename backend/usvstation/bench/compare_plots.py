@@ -5,8 +5,12 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
+from usvstation.scenario import Scenario
 
-def write_plots(rows: list[dict[str, Any]], folder: Path) -> list[str]:
+
+def write_plots(rows: list[dict[str, Any]], folder: Path,
+                scenarios: dict[str, Scenario]) -> list[str]:
+    """`scenarios` by name: those the rows were planned on (for the obstacles drawn)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -14,12 +18,7 @@ def write_plots(rows: list[dict[str, Any]], folder: Path) -> list[str]:
 
     folder.mkdir(parents=True, exist_ok=True)
     written = []
-    from usvstation.bench.compare import family_scenarios
-
-    scen = {}
-    for fam in {r["family"] for r in rows}:
-        for sc in family_scenarios(fam, hidden=0, dense_maps=1):
-            scen[sc.name] = sc
+    scen = scenarios
     for name in ("case2", "transit-002-3", "dense-0-0", "colregs-head-on",
                  "colregs-crossing-give-way-b", "trap-u-shape"):
         sel = [r for r in rows if r["scenario"] == name and r["success"] and r["seed"] == 1]

@@ -31,7 +31,6 @@ from usvstation.bench.scenarios import (
 from usvstation.planning.encoding import GeneLayout
 from usvstation.planning.fitness import Evaluator
 from usvstation.planning.iga import _foundation, run_iga
-from usvstation.planning.options import IGAOptions
 from usvstation.planning.plan import NoFeasiblePlan, plan_scenario, replan_from
 from usvstation.planning.problem import Problem
 from usvstation.planning.validate import plan_violations
@@ -42,6 +41,7 @@ from usvstation.scenario import (
     parse_scenario,
     scenario_at,
 )
+from usvstation.scenario.options import IGAOptions
 
 TERMS = ("fitness", "fit_d", "fit_t", "fit_ang", "fit_mal")
 Progress = Callable[[str], None]

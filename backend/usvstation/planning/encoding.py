@@ -28,8 +28,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from usvstation.planning.options import IGAOptions
 from usvstation.planning.problem import Problem
+from usvstation.scenario.options import IGAOptions
 
 
 class InfeasibleProblem(ValueError):

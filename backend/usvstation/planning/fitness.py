@@ -30,9 +30,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from usvstation.planning.encoding import PathBatch
-from usvstation.planning.options import IGAOptions
 from usvstation.planning.problem import Problem
 from usvstation.planning.xyt import Num, hits_from_relative, polyline_hits, relative_positions
+from usvstation.scenario.options import IGAOptions
 
 _EPS = 1e-9
 BRUTE_CHUNK = 1 << 18  # elements per eq. 9 pass: 2 MB a temporary

@@ -30,9 +30,9 @@ import numpy as np
 
 from usvstation.planning.encoding import GeneLayout, PathBatch
 from usvstation.planning.fitness import Evaluation, Evaluator
-from usvstation.planning.options import IGAOptions
 from usvstation.planning.preheat import PreheatReport, preheat, random_levels
 from usvstation.planning.problem import Problem
+from usvstation.scenario.options import IGAOptions
 
 EVAL_CHUNK = 128  # paths per evaluation pass; the time budget is checked between passes
 

@@ -32,10 +32,10 @@ import math
 
 import numpy as np
 
-from usvstation.planning.options import IGAOptions
 from usvstation.planning.problem import sweep_copies
 from usvstation.planning.start import MAX_PREFIX_LEGS
 from usvstation.scenario import Scenario, ScenarioError
+from usvstation.scenario.options import IGAOptions
 
 MEMORY_LIMIT_BYTES = 500 * 2**20  # the bound on a planning process's peak
 BASE_BYTES = 150 * 2**20  # interpreter, NumPy, SciPy and the station's modules (about 100 MB)

@@ -14,13 +14,13 @@ from usvstation.planning.encoding import GeneLayout, InfeasibleProblem
 from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.planning.iga import IGAResult, run_iga
 from usvstation.planning.limits import check_memory
-from usvstation.planning.options import IGAOptions
 from usvstation.planning.problem import Problem, sweep_moving
 from usvstation.planning.smoothing import smooth_path
 from usvstation.planning.start import Prefix, needs_prefix, prefixes, start_state
 from usvstation.planning.validate import current_vector, hull_clearance, plan_violations
 from usvstation.planning.xyt import ObstacleField
 from usvstation.scenario import Scenario, scenario_at
+from usvstation.scenario.options import IGAOptions
 
 PLANNERS = ("iga",)
 MIN_WATER_M = 0.05  # least water between hull and obstacle a plan may keep, m

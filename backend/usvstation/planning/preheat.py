@@ -46,9 +46,9 @@ import numpy as np
 from usvstation.geometry import angle_diff
 from usvstation.planning.encoding import GeneLayout
 from usvstation.planning.fitness import water_speed_bad
-from usvstation.planning.options import IGAOptions
 from usvstation.planning.problem import Problem
 from usvstation.planning.xyt import Num, hits_from_relative
+from usvstation.scenario.options import IGAOptions
 
 _MAX_SLOPE = math.radians(80.0)  # steepest segment against the x step
 _SPREAD = math.radians(55.0)  # bearing spread of candidates around the aim

@@ -167,7 +167,7 @@ def _run_iga(scenario: Scenario, seed: int, options: Any) -> dict[str, Any]:
 
 
 class _IGAPassThrough(BaseModel):
-    """IGA options are validated by `IGAOptions` (planning/options.py)."""
+    """IGA options are validated by `IGAOptions` (scenario/options.py)."""
 
     model_config = ConfigDict(extra="allow")
 

@@ -20,11 +20,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from usvstation.geometry import angle_diff
-from usvstation.planning.options import IGAOptions
 from usvstation.planning.problem import StartState, sweep_moving
 from usvstation.planning.validate import MOVING_START_SPEED, current_vector
 from usvstation.planning.xyt import ObstacleField
 from usvstation.scenario import Scenario
+from usvstation.scenario.options import IGAOptions
 
 MAX_PREFIX_LEGS = 24
 ALIGNED = math.radians(60.0)  # a start course within this of the goal needs no prefix

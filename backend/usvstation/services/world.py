@@ -17,13 +17,13 @@ from typing import Any
 
 from usvstation.geo import RampFrame
 from usvstation.scenario import Scenario
+from usvstation.scenario.ships import LeverArm
 from usvstation.services.hub import LiveHub
 from usvstation.shipinputs.decode import SentenceDecoder, apply_reports
 from usvstation.shipinputs.readers import Source, open_udp, parse_source, run_stream_source
 from usvstation.sim.sea import SimulatedSea
 from usvstation.store.db import utc_now
 from usvstation.world.model import World, enu_to_compass
-from usvstation.world.ships import LeverArm
 
 log = logging.getLogger(__name__)
 PUBLISH_HZ = 2.0

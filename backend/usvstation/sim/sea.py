@@ -2,7 +2,7 @@
 ship's network would (NMEA 0183 own-ship sentences and AIS/ARPA over UDP).
 
 `SeaModel` is pure: the true state of every ship at any time t (s since the sea started),
-from the scenario's `origin`, `mother_ship` and `traffic` (world/ships.py), and the
+from the scenario's `origin`, `mother_ship` and `traffic` (scenario/ships.py), and the
 sentences that report it (pynmea2 and pyais encode them). `run_sea` sends them on a real
 UDP socket at `rate_hz` (sim time, scaled by `sim_speed`) and records the truth.
 """
@@ -24,8 +24,8 @@ from pyais import encode_dict
 
 from usvstation.geo import RampFrame
 from usvstation.scenario import Scenario
+from usvstation.scenario.ships import MotherShip, TrafficShip
 from usvstation.world.model import KNOT, compass_to_enu
-from usvstation.world.ships import MotherShip, TrafficShip
 
 STATIC_EVERY_S = 10.0  # AIS static reports (types 5 / 24)
 TRUTH_KEPT = 36000

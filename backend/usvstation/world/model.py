@@ -6,7 +6,7 @@ from north); ramp-frame values follow shared/DESIGN.md "Frames". Tracks are dead
 at constant course and speed over ground from their last report.
 
 The ramp pose comes from the own ship's position reference and heading through the lever
-arm (world/ships.py LeverArm); without an own-ship fix the ramp is the fixed scenario
+arm (scenario/ships.py LeverArm); without an own-ship fix the ramp is the fixed scenario
 origin. Target velocities are given over ground (`vx`, `vy`) and relative to the ramp
 (`rvx`, `rvy`): in the ship-fixed ramp frame a target moves with the relative velocity.
 """
@@ -21,7 +21,7 @@ import numpy as np
 import pymap3d
 
 from usvstation.geo import RampFrame
-from usvstation.world.ships import LeverArm
+from usvstation.scenario.ships import LeverArm
 
 Source = Literal["ais", "arpa", "manual", "sim"]
 DEFAULT_RADIUS_M = 5.0  # a target of unknown size

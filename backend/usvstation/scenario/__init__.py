@@ -16,8 +16,8 @@ from typing import Annotated, Any, Literal
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
 from usvstation.geometry import inflated_radius
-from usvstation.planning.options import IGAOptions
-from usvstation.world.ships import MotherShip, TrafficShip
+from usvstation.scenario.options import IGAOptions
+from usvstation.scenario.ships import MotherShip, TrafficShip
 
 _STRICT = ConfigDict(extra="forbid", strict=True, allow_inf_nan=False)
 
