@@ -57,10 +57,10 @@ def test_after_hold_the_boat_stays_within_3_m_for_60_s_in_half_a_metre_per_secon
         seen = _telemetry(c, run)[-1]["boat_time"]
         rows = _wait_boat_time(c, run, seen + 5.0, 60)
         # the first fix the boat reports in HOLD: where it was told to hold (within 0.2 s)
-        at_hold = next(x for x in rows if x["mode"] == "HOLD")
+        at_hold = next(x for x in rows if x["state"] == "HOLD")
         t_hold = at_hold["boat_time"]
         rows = _wait_boat_time(c, run, t_hold + 30.0 + 60.0, 120)
-        assert all(x["mode"] == "HOLD" for x in rows if x["boat_time"] >= t_hold)
+        assert all(x["state"] == "HOLD" for x in rows if x["boat_time"] >= t_hold)
         # The boat reports its exact position (--no-sim-gnss-error), so every fix is measured
         # against where HOLD came. It was under way at about 2.7 m/s: 30 s to stop (it
         # overshoots about 4.5 m) and come back, then 60 s within 3 m.

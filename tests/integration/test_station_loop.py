@@ -86,7 +86,7 @@ def test_plan_upload_start_complete_and_export(station):
     # the boat followed the plan to the ramp end
     assert min(math.hypot(r["x"], r["y"]) for r in rows) < 2.0
     last = rows[-1]  # the run ends on the boat's DONE heartbeat, at the ramp end
-    assert math.hypot(last["x"], last["y"]) < 3.0 and last["mode"] in ("RUNNING", "DONE")
+    assert math.hypot(last["x"], last["y"]) < 3.0 and last["state"] in ("RUNNING", "DONE")
     assert c.get("/api/boat").json()["boat"]["state"] == "DONE"
     # telemetry at 5 Hz of boat time or more
     gaps = [b["boat_time"] - a["boat_time"] for a, b in itertools.pairwise(rows)]

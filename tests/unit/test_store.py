@@ -45,3 +45,31 @@ def test_writer_commits_within_the_window_and_flushes_on_demand(tmp_path):
         assert len(store.telemetry(None, None, None, 100)) == 11
     finally:
         store.close()
+
+
+def test_an_old_database_keeps_its_telemetry_and_its_mode_column_becomes_state(tmp_path):
+    """Schema 1 named the boat's state `mode`; opening it renames the column in place."""
+    import sqlite3
+
+    old = sqlite3.connect(tmp_path / "station.sqlite3")
+    old.executescript("""
+        CREATE TABLE runs (id INTEGER PRIMARY KEY, mission_id TEXT, plan_id TEXT,
+            started_at TEXT NOT NULL, ended_at TEXT, state TEXT NOT NULL DEFAULT 'active');
+        CREATE TABLE telemetry (id INTEGER PRIMARY KEY, run INTEGER REFERENCES runs(id),
+            time TEXT NOT NULL, boat_time REAL, lat REAL, lon REAL, x REAL, y REAL,
+            heading_deg REAL, course_deg REAL, speed REAL, ramp_heading_deg REAL,
+            yaw_rate_dps REAL, fix_type INTEGER, satellites INTEGER, hdop REAL,
+            thrust_left REAL, thrust_right REAL, battery_v REAL,
+            waypoint_index INTEGER, cross_track_m REAL, mode TEXT);
+        INSERT INTO telemetry (time, boat_time, x, y, mode)
+            VALUES ('2026-11-22T10:00:00.000Z', 1.5, 10.0, 2.0, 'HOLD');
+    """)
+    old.commit()
+    old.close()
+    store = Store(tmp_path)
+    (row,) = store.telemetry(None, None, None, 10)
+    assert row["state"] == "HOLD" and "mode" not in row
+    assert (row["boat_time"], row["x"], row["y"]) == (1.5, 10.0, 2.0)
+    assert store.conn.execute("PRAGMA user_version").fetchone()[0] == 2
+    Store(tmp_path)  # opening it again changes nothing
+    assert store.telemetry(None, None, None, 10) == [row]

@@ -73,7 +73,7 @@ class TelemetryRow(BaseModel):
     battery_v: float | None
     waypoint_index: int | None
     cross_track_m: float | None
-    mode: str | None
+    state: str | None
 
 
 class WriterHealth(BaseModel):

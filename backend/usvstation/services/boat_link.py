@@ -129,5 +129,5 @@ def telemetry_row(t: Telemetry, frame: RampFrame | None, run: int | None) -> dic
         "satellites": t.satellites, "hdop": t.hdop,
         "thrust_left": t.thrust_left, "thrust_right": t.thrust_right,
         "battery_v": t.battery_v, "waypoint_index": t.waypoint_index,
-        "cross_track_m": -t.cross_track_m, "mode": t.state,
+        "cross_track_m": -t.cross_track_m, "state": t.state,
     }

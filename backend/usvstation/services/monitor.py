@@ -152,7 +152,7 @@ class MonitorService:
         if self.waypoints is None or row.get("run") != self.run or row.get("lat") is None:
             return
         if self.t0 is None:
-            if row.get("mode") != "RUNNING":
+            if row.get("state") != "RUNNING":
                 return
             self.t0 = float(row["boat_time"])
         now = self.world.clock()

@@ -39,7 +39,7 @@ CREATE TABLE IF NOT EXISTS telemetry (
     heading_deg REAL, course_deg REAL, speed REAL, ramp_heading_deg REAL,
     yaw_rate_dps REAL, fix_type INTEGER, satellites INTEGER, hdop REAL,
     thrust_left REAL, thrust_right REAL, battery_v REAL,
-    waypoint_index INTEGER, cross_track_m REAL, mode TEXT
+    waypoint_index INTEGER, cross_track_m REAL, state TEXT
 );
 CREATE INDEX IF NOT EXISTS telemetry_run ON telemetry(run, id);
 CREATE INDEX IF NOT EXISTS telemetry_time ON telemetry(time);
@@ -76,7 +76,7 @@ CREATE TABLE IF NOT EXISTS settings (
 TELEMETRY_COLUMNS = (
     "run", "time", "boat_time", "lat", "lon", "x", "y", "heading_deg", "course_deg", "speed",
     "ramp_heading_deg", "yaw_rate_dps", "fix_type", "satellites", "hdop", "thrust_left",
-    "thrust_right", "battery_v", "waypoint_index", "cross_track_m", "mode",
+    "thrust_right", "battery_v", "waypoint_index", "cross_track_m", "state",
 )
 _INSERT = (
     f"INSERT INTO telemetry ({', '.join(TELEMETRY_COLUMNS)}) "
@@ -244,6 +244,22 @@ class TelemetryWriter:
         self.stats.commits += 1
 
 
+SCHEMA_VERSION = 2  # PRAGMA user_version of a database this code wrote
+
+
+def migrate(conn: sqlite3.Connection) -> None:
+    """Bring a database of an earlier version up to SCHEMA_VERSION, in place.
+
+    1 -> 2: the telemetry column `mode` held the boat's state: renamed `state`.
+    """
+    version = conn.execute("PRAGMA user_version").fetchone()[0]
+    columns = {r[1] for r in conn.execute("PRAGMA table_info(telemetry)")}
+    if "mode" in columns and "state" not in columns:
+        conn.execute("ALTER TABLE telemetry RENAME COLUMN mode TO state")
+    if version < SCHEMA_VERSION:
+        conn.execute(f"PRAGMA user_version = {SCHEMA_VERSION}")
+
+
 class Store:
     """The station's database: schema, writer, and read helpers (call from worker threads)."""
 
@@ -252,6 +268,7 @@ class Store:
         self.path = data_dir / "station.sqlite3"
         self._local = threading.local()
         with connect(self.path) as conn:
+            migrate(conn)
             conn.executescript(SCHEMA)
         self.writer = TelemetryWriter(self.path)
 
