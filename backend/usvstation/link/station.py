@@ -20,7 +20,6 @@ import time
 from collections.abc import AsyncIterator, Awaitable, Callable
 from typing import Any
 
-from usvstation.geometry import CDEG, CM, MS
 from usvstation.link.mission import Mission
 from usvstation.link.protocol import (
     CommandOutcome,
@@ -218,15 +217,6 @@ class BoatLink:
 
     def boat_uptime_ms(self) -> int | None:
         return self.protocol.boat_uptime_ms(self._now())
-
-    async def guide(self, heading_deg: float, speed: float, valid_s: float) -> None:
-        """Shore-assisted setpoint: compass heading (deg), speed (m/s), for valid_s seconds."""
-        try:
-            self.protocol.send_guidance(CDEG.to_wire(heading_deg), CM.to_wire(speed),
-                                        MS.to_wire(valid_s))
-        except RuntimeError as exc:
-            raise LinkError(str(exc)) from None
-        await self._flush()
 
     # ---- I/O loop
     async def _flush(self) -> None:
