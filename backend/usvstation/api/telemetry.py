@@ -1,0 +1,93 @@
+"""`/api/runs`, `/api/telemetry` and its export: stored runs and telemetry."""
+
+from __future__ import annotations
+
+import asyncio
+import datetime as dt
+import json
+from collections.abc import AsyncIterator
+from typing import Annotated, Any, Literal
+
+from fastapi import (
+    APIRouter,
+    HTTPException,
+    Query,
+)
+from fastapi.responses import Response, StreamingResponse
+
+from usvstation.api.deps import Read, StationDep
+from usvstation.api.models import (
+    RunRow,
+    TelemetryRow,
+)
+from usvstation.services.export import FORMATS, export_chunks, planned_route
+
+TELEMETRY_PAGE_MAX = 100_000
+
+
+def _utc(value: dt.datetime | None) -> str | None:
+    """Datetime query parameter to the stored ISO form (UTC, milliseconds, Z)."""
+    if value is None:
+        return None
+    if value.tzinfo is None:
+        value = value.replace(tzinfo=dt.UTC)
+    return value.astimezone(dt.UTC).strftime("%Y-%m-%dT%H:%M:%S.%f")[:-3] + "Z"
+
+
+async def _in_thread(chunks: Any) -> AsyncIterator[str]:
+    """Iterate a blocking generator in a worker thread, chunk by chunk."""
+    done = object()
+    while (piece := await asyncio.to_thread(next, chunks, done)) is not done:
+        yield piece
+
+
+router = APIRouter()
+
+
+@router.get("/api/runs", tags=["telemetry"], dependencies=Read, response_model=list[RunRow])
+async def list_runs(station: StationDep) -> list[dict[str, Any]]:
+    return await asyncio.to_thread(station.store.runs)
+
+
+@router.get("/api/telemetry", tags=["telemetry"], dependencies=Read,
+         response_model=list[TelemetryRow],
+         responses={200: {"headers": {"X-Next-After": {
+             "description": "present when the page is full: pass it as `after` for the "
+             "next page", "schema": {"type": "integer"}}}}})
+async def telemetry(
+    station: StationDep,
+    run: Annotated[int | None, Query(ge=1, le=2**63 - 1)] = None,
+    since: dt.datetime | None = None,
+    until: dt.datetime | None = None,
+    after: Annotated[int, Query(ge=0, le=2**63 - 1,
+                                description="cursor: rows with a larger id")] = 0,
+    limit: Annotated[int, Query(ge=1, le=TELEMETRY_PAGE_MAX)] = TELEMETRY_PAGE_MAX,
+) -> Response:
+    """Telemetry rows in id order, one page of at most 100,000 rows (read and encoded off
+    the event loop)."""
+    def page() -> tuple[bytes, int | None]:
+        rows = station.store.telemetry(run, _utc(since), _utc(until), limit, after)
+        body = json.dumps(rows, separators=(",", ":"), allow_nan=False).encode()
+        return body, rows[-1]["id"] if len(rows) == limit else None
+
+    body, next_after = await asyncio.to_thread(page)
+    headers = {"X-Next-After": str(next_after)} if next_after is not None else None
+    return Response(body, media_type="application/json", headers=headers)
+
+
+@router.get("/api/telemetry/export", tags=["telemetry"], dependencies=Read)
+async def export(station: StationDep, run: Annotated[int | None, Query(ge=1, le=2**63 - 1)] = None,
+    format: Literal["csv", "gpx", "geojson", "jsonl"] = "csv",
+) -> StreamingResponse:
+    run_row = await asyncio.to_thread(station.store.run, run) if run is not None else None
+    if run is not None and run_row is None:
+        raise HTTPException(404, detail=f"no run {run}")
+    plan_job = station.plans.get(run_row["plan_id"]) if run_row and run_row["plan_id"] else None
+    media, ext = FORMATS[format]
+    chunks = export_chunks(format, station.store.iter_telemetry(run), run_row,
+                           planned_route(plan_job))
+    name = f"run-{run}" if run is not None else "telemetry"
+    return StreamingResponse(
+        _in_thread(chunks), media_type=media,
+        headers={"Content-Disposition": f'attachment; filename="{name}.{ext}"'},
+    )
