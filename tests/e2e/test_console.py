@@ -10,6 +10,7 @@ import math
 import re
 import time
 
+from offline import station_only_context
 from playwright.sync_api import expect
 
 from usvstation.geo import RampFrame
@@ -272,17 +273,7 @@ def test_map_plan_position_and_inflation_match_the_station(page, station):
 
 def test_api_docs_render_in_the_browser_with_the_network_blocked(browser, station, artifacts):
     """/docs (Swagger UI) and /redoc draw the station's own API from local assets only."""
-    context = browser.new_context(viewport={"width": 1280, "height": 800})
-    blocked: list[str] = []
-
-    def only_the_station(route):
-        if route.request.url.startswith(station.url):
-            route.continue_()
-        else:
-            blocked.append(route.request.url)
-            route.abort()
-
-    context.route("**/*", only_the_station)
+    context, blocked = station_only_context(browser, station.url)
     page = context.new_page()
     errors: list[str] = []
     page.on("pageerror", lambda exc: errors.append(str(exc)))

@@ -16,6 +16,7 @@ import zlib
 from pathlib import Path
 
 import pytest
+from offline import station_only_context
 from playwright.sync_api import expect
 from stationproc import StationProcess
 from test_console import open_console
@@ -184,17 +185,7 @@ def test_offline_chart_renders_with_the_network_blocked(browser, chart_station, 
     assert listed[0]["tiles"] == "/api/charts/harbour/{z}/{x}/{y}"
     assert st.client.get("/api/charts/harbour/0/0/0").status_code == 404
     assert st.client.get("/api/charts/..%2Fetc/1/0/0").status_code == 404
-    context = browser.new_context(viewport={"width": 1280, "height": 800})
-    blocked = []
-
-    def only_the_station(route):
-        if route.request.url.startswith(st.url):
-            route.continue_()
-        else:
-            blocked.append(route.request.url)
-            route.abort()
-
-    context.route("**/*", only_the_station)
+    context, blocked = station_only_context(browser, st.url)
     page = context.new_page()
     try:
         open_console(page, st)
