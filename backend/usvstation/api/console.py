@@ -84,11 +84,14 @@ def mount_docs(app: FastAPI, frontend_dir: Path) -> None:
     missing = [str(p) for p in (swagger / "swagger-ui-bundle.js", redoc / "redoc.standalone.js")
                if not p.is_file()]
 
+    def unavailable() -> PlainTextResponse:
+        return PlainTextResponse(f"API docs not available: {', '.join(missing)} missing; "
+                                 "run `npm ci` in frontend/\n", status_code=503)
+
     @app.get("/docs", include_in_schema=False)
     async def swagger_ui() -> HTMLResponse:
         if missing:
-            return PlainTextResponse(f"API docs not available: {', '.join(missing)} missing; "
-                                     "run `npm ci` in frontend/\n", status_code=503)
+            return unavailable()
         return _docs_page(get_swagger_ui_html(
             openapi_url=app.openapi_url or "/openapi.json", title=title,
             swagger_js_url="/vendor/swagger-ui/swagger-ui-bundle.js",
@@ -98,8 +101,7 @@ def mount_docs(app: FastAPI, frontend_dir: Path) -> None:
     @app.get("/redoc", include_in_schema=False)
     async def redoc_ui() -> HTMLResponse:
         if missing:
-            return PlainTextResponse(f"API docs not available: {', '.join(missing)} missing; "
-                                     "run `npm ci` in frontend/\n", status_code=503)
+            return unavailable()
         return _docs_page(get_redoc_html(
             openapi_url=app.openapi_url or "/openapi.json", title=title,
             redoc_js_url="/vendor/redoc/redoc.standalone.js",
