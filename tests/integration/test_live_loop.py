@@ -53,6 +53,14 @@ def poll(fn, timeout: float, what: str):
     raise AssertionError(f"timed out waiting for {what}")
 
 
+def wait_parked(c) -> None:
+    """Until /api/world shows the target stopped where it parks, on the boat's path."""
+    poll(lambda: any(t["id"] == TARGET and t["speed"] < 0.1
+                     and math.hypot(t["x"] - PARK[0], t["y"] - PARK[1]) < 2.0
+                     for t in c.get("/api/world").json()["targets"]), 60,
+         "the target stopped on the path")
+
+
 @pytest.fixture
 def station(tmp_path):
     st = StationProcess(tmp_path / "data", "--sim-speed", "5", "--replan", "confirm")
@@ -85,6 +93,10 @@ def test_turning_target_warns_proposes_a_replan_and_confirm_swaps_it(station) ->
             t["id"] == TARGET for t in w["targets"]) and w, 30, "the sea in /api/world")
         assert world["ramp"]["source"] == "own_ship"
         assert math.hypot(world["ramp"]["vx"], world["ramp"]["vy"]) < 0.05
+        # The plan is made once the target has turned and stopped on the path (the working
+        # scenario knows nothing of it): the monitor must find it, and the re-plan avoid it
+        # where it lies (started earlier, the warning can come while it still moves).
+        wait_parked(c)
 
         job = station.wait_plan(c.post("/api/plans", json={"seed": 1}).json()["id"], 120)
         assert job["status"] == "done"
@@ -172,6 +184,7 @@ def test_replan_policies_auto_and_off(tmp_path, policy: str) -> None:
         assert c.put("/api/scenario", json=scenario()).status_code == 200
         poll(lambda: any(t["id"] == TARGET for t in c.get("/api/world").json()["targets"]),
              30, "the target")
+        wait_parked(c)
         job = st.wait_plan(c.post("/api/plans", json={"seed": 1}).json()["id"], 120)
         r = c.post("/api/missions", json={"plan_id": job["id"]})
         mission = st.wait(f"/api/missions/{r.json()['id']}", "state", ("uploading",), 20)
@@ -188,7 +201,7 @@ def test_replan_policies_auto_and_off(tmp_path, policy: str) -> None:
                                       if p["state"] != "planning"), None),
                         120, "the re-plan")
             if hasattr(BoatService, "swap_mission"):
-                assert done["state"] == "applied" and done["latency_ms"] > 0
+                assert done["state"] == "applied" and done["latency_ms"] > 0, done["error"]
             else:
                 assert done["state"] == "planned" and done["error"] == NO_HOT_SWAP
                 assert c.get(f"/api/plans/{done['plan_id']}").json()["status"] == "done"
