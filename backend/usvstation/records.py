@@ -382,3 +382,80 @@ class Replan(TypedDict):
     swap_at_ms: NotRequired[int]
     attempts: NotRequired[int]
     proposed_plan_id: NotRequired[str | None]
+
+
+class OwnShip(TypedDict):
+    """The mother ship as its sensors report it, predicted to the snapshot's instant."""
+
+    lat: float
+    lon: float
+    heading_deg: float | None
+    course_deg: float | None
+    speed: float | None
+    age_s: float
+
+
+class RampPose(TypedDict):
+    """The ramp's pose: on the moving ship (`own_ship`) or the scenario's fixed origin."""
+
+    lat: float
+    lon: float
+    ramp_bearing_deg: float
+    vx: float
+    vy: float
+    speed: float
+    course_deg: float
+    source: Literal["own_ship", "origin"]
+
+
+class Target(TypedDict):
+    """A track of the world model; x, y, velocities in the ramp frame (rvx, rvy relative
+    to the ramp, vx, vy over ground)."""
+
+    id: str
+    source: str
+    mmsi: int | None
+    name: str | None
+    lat: float
+    lon: float
+    x: float
+    y: float
+    vx: float
+    vy: float
+    rvx: float
+    rvy: float
+    radius: float
+    age_s: float
+    speed: float
+    course_deg: float
+
+
+class InputSource(TypedDict):
+    url: str
+    state: str
+    port: int | None
+
+
+class InputStats(TypedDict):
+    sentences: int
+    bad: int
+    ignored: int
+    bad_reasons: dict[str, int]
+    sources: list[InputSource]
+
+
+class WorldSnapshot(TypedDict):
+    """`GET /api/world` and the websocket's `world`."""
+
+    time: str
+    own_ship: OwnShip | None
+    ramp: RampPose | None
+    targets: list[Target]
+    stats: InputStats
+
+
+class WorldScenario(TypedDict):
+    """`GET /api/world/scenario`: the working scenario against the live world."""
+
+    scenario: JsonObject
+    dropped: list[str]
