@@ -10,16 +10,18 @@ from collections import deque
 
 from usvstation.config import ExposureError, Settings, Tokens, resolve_token
 from usvstation.link.protocol import BoatReport
-from usvstation.records import StationHealth
+from usvstation.records import PlanDocument, StationHealth
 from usvstation.scenario import Origin, Scenario, bundled_scenario_dir, parse_scenario
 from usvstation.services.alerts import LinkAlerts
 from usvstation.services.boat import BoatService
 from usvstation.services.hub import LiveHub
 from usvstation.services.monitor import MonitorService
 from usvstation.services.plans import PlanService
+from usvstation.services.simboat import EmbeddedSim
 from usvstation.services.world import WorldService
 from usvstation.store.alerts import AlertStore
 from usvstation.store.db import Store
+from usvstation.viz.feed import ThreeDFeed
 from usvstation.viz.view import ThreeDView
 
 DEFAULT_SCENARIO = "case1"
@@ -88,7 +90,9 @@ class Station:
         self.lag = LoopLagMonitor()
         self._watch: asyncio.Task | None = None
         self.started = self.stopped = False
-        self.boat = BoatService(settings, self.store, self.hub, self.plans, self.view)
+        self.boat = BoatService(settings, self.store, self.hub, self.plans)
+        self.sim: EmbeddedSim | None = None
+        self.hub.observers.append(ThreeDFeed(self.view, self._plan_of_mission).on_event)
         self.world = WorldService(self.hub, settings.nmea, simulate=settings.link == "sim",
                                   sim_speed=settings.sim_speed)
         self.alerts = AlertStore(self.store)
@@ -114,7 +118,12 @@ class Station:
                         scenario.name, origin.lat, origin.lon, origin.ramp_bearing_deg)
             scenario = scenario.model_copy(update={"origin": origin})
         await self.world.start(scenario)
-        await self.boat.start(scenario)
+        device = None
+        if self.settings.link == "sim":  # the embedded simulated boat on a pty
+            self.sim = EmbeddedSim(scenario, self.settings, self.boat.key)
+            await asyncio.to_thread(self.sim.start)
+            device = self.sim.device
+        await self.boat.start(scenario, device, simulated=self.sim is not None)
         if self.boat.link is not None:
             self.boat.link.add_listener(self.link_alerts.on_link_event)
             self.boat.link.add_listener(self._publish_heartbeat)
@@ -139,6 +148,8 @@ class Station:
         await self.monitor.stop()
         await self.world.stop()
         await self.boat.stop()
+        if self.sim is not None:
+            await asyncio.to_thread(self.sim.stop)
         await asyncio.to_thread(self.view.stop)
         await self.plans.stop()
         await asyncio.to_thread(self.store.close)
@@ -175,6 +186,12 @@ class Station:
         self.view.show_scenario(scenario)
         await self.world.use_scenario(scenario)
         self.hub.publish("scenario", {"name": scenario.name})
+
+    def _plan_of_mission(self, mission_id: str) -> PlanDocument | None:
+        """The plan a mission was made from (for the 3D view), if it is known."""
+        rec = self.boat.missions.get(mission_id)
+        job = self.plans.get(rec.plan_id) if rec is not None else None
+        return job["plan"] if job is not None else None
 
     def health(self) -> StationHealth:
         """Station health, no boat data: status ok or degraded with the reasons."""

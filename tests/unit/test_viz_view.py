@@ -100,3 +100,27 @@ def test_a_run_longer_than_its_plan_extends_slider_and_obstacles(view):
     assert view.horizon_s == 60 and view.gui["time"].max == 60
     tops = [node.vertices[:, 2].max() for node in view._obstacle_nodes[::2]]
     assert tops and all(top == pytest.approx(60.0) for top in tops)
+
+
+def test_feed_shows_a_runs_plan_and_its_own_track_from_hub_events(view):
+    """The 3D view listens to the station's events: a run's plan when it opens, then only
+    that run's fixes, timed from its first fix; nothing after the run ends."""
+    from usvstation.services.hub import LiveHub
+    from usvstation.viz.feed import ThreeDFeed
+
+    plan = {"waypoints": [{**w, "speed": 1.0, "heading_deg": 180.0} for w in WAYPOINTS]}
+    hub = LiveHub()
+    hub.observers.append(ThreeDFeed(view, {"m1": plan}.get).on_event)
+
+    def fix(run, x, t):
+        return {"run": run, "x": x, "y": 0.0, "boat_time": t}
+
+    hub.publish("telemetry", fix(None, 99.0, 1.0))  # no run yet: not drawn
+    hub.publish("run", {"id": 7, "mission": "m1", "state": "active"})
+    assert view.waypoints == plan["waypoints"]
+    hub.publish("telemetry", fix(7, 80.0, 100.0))
+    hub.publish("telemetry", fix(6, 50.0, 100.1))  # another run's fix
+    hub.publish("telemetry", fix(7, 79.0, 100.2))
+    hub.publish("run", {"id": 7, "mission": "m1", "state": "completed"})
+    hub.publish("telemetry", fix(7, 78.0, 100.4))  # after the end
+    assert view._track == [(80.0, 0.0, 0.0), (79.0, 0.0, pytest.approx(0.2 * view.time_scale))]

@@ -1,6 +1,6 @@
 """The boat service: missions and commands on top of the link (services/boat_link.py), with
 the mission state machine in services/missions.py, runs in services/runs.py and the
-embedded simulated boat's lifetime in services/simboat.py.
+embedded simulated boat's lifetime in services/simboat.py (started by station.py).
 
 Safety rules kept here (the boat keeps its own, protocol/README.md):
 - one upload at a time; every mission state is derived from the boat's USV_MISSION_STATE;
@@ -41,9 +41,7 @@ from usvstation.services.hub import LiveHub
 from usvstation.services.missions import MissionRecord, MissionStatus
 from usvstation.services.plans import PlanService
 from usvstation.services.runs import Runs
-from usvstation.services.simboat import EmbeddedSim
 from usvstation.store.db import Store, utc_now
-from usvstation.viz.view import ThreeDView
 
 PROGRESS_EVERY_S = 0.1  # at most this often per upload on the websocket
 StreamFactory = Callable[[], Awaitable[ByteStream]]
@@ -60,42 +58,38 @@ class BoatError(Exception):
 class BoatService:
     """Missions, commands and runs; the link and the simulated boat are its parts."""
 
-    def __init__(self, settings: Settings, store: Store, hub: LiveHub, plans: PlanService,
-                 view: ThreeDView | None = None, *,
+    def __init__(self, settings: Settings, store: Store, hub: LiveHub, plans: PlanService, *,
                  stream_factory: StreamFactory | None = None) -> None:
         self.settings, self.store, self.hub, self.plans = settings, store, hub, plans
-        self.view = view
         self.key = resolve_link_key(settings)
         self._stream_factory = stream_factory  # tests: an injected link
-        self.sim: EmbeddedSim | None = None
+        self.simulated = False  # the embedded simulated boat is on the far end
         self.device = settings.link
         self.handler: LinkHandler | None = None
         self.missions: dict[str, MissionRecord] = {}
         self.uploading: MissionRecord | None = None
         self._last_progress: dict[str, float] = {}
         self._tasks: set[asyncio.Task] = set()
-        self.runs = Runs(store, hub, plans, view)
+        self.runs = Runs(store, hub, plans)
 
     # --- lifecycle -------------------------------------------------------------------------
-    async def start(self, scenario: Scenario) -> None:
+    async def start(self, scenario: Scenario, device: str | None = None,
+                    simulated: bool = False) -> None:
+        """Open the link on `device` (default: --link) and recover the missions; with
+        `simulated` the far end is the embedded simulated boat (station.py starts it)."""
         rows = await asyncio.to_thread(recover_missions, self.store)
         self.missions = {k: MissionRecord.from_row(v) for k, v in rows.items()}
         await asyncio.to_thread(self.store.close_stale_runs)
         for rec in self.missions.values():
             if rec.state == MissionStatus.ACTIVE:
                 rec.run = None  # its run closed as interrupted; the boat's report reopens one
-        if self.settings.link == "sim" and self._stream_factory is None:
-            if scenario.origin is None:
-                raise ValueError("the simulated boat needs a working scenario with an origin")
-            self.sim = EmbeddedSim(scenario, self.settings, self.key)
-            self.sim.start()
-            self.device = self.sim.device
+        self.device, self.simulated = device or self.device, simulated
         device, baud = self.device, self.settings.baud
         factory = self._stream_factory or (lambda: open_stream(device, baud))
         config = LinkConfig(boat_id=self.settings.boat_id, station_id=self.settings.station_id,
                             baud=baud, link_timeout_s=self.settings.heartbeat_timeout_s)
         link = BoatLink(device, baud=baud, stream_factory=factory, config=config, key=self.key)
-        self.handler = LinkHandler(link, device, self.store, self.hub, self.view,
+        self.handler = LinkHandler(link, device, self.store, self.hub,
                                    self._on_report, self._on_reboot)
         self.runs.handler = self.handler
         if scenario.origin is not None:
@@ -109,8 +103,6 @@ class BoatService:
             task.cancel()
         if self.handler is not None:
             await self.handler.link.close()
-        if self.sim is not None:
-            await asyncio.to_thread(self.sim.stop)
 
     @property
     def link(self) -> BoatLink | None:
@@ -130,7 +122,7 @@ class BoatService:
         snap: BoatSnapshot = self.handler.snapshot() if self.handler else {
             "link": {"up": False, "device": self.device}, "boat": None, "telemetry": None,
             "status": []}
-        snap["link"]["simulated"] = self.sim is not None
+        snap["link"]["simulated"] = self.simulated
         active = self._active_record()
         snap["run"] = self.handler.run if self.handler else None
         snap["mission"] = active.public() if active else None

@@ -22,7 +22,6 @@ from usvstation.link.station import BoatLink
 from usvstation.records import BoatSnapshot, StatusText, TelemetryRow
 from usvstation.services.hub import LiveHub
 from usvstation.store.db import Store, utc_now
-from usvstation.viz.view import ThreeDView
 
 STATUS_KEPT = 50
 SEVERITIES = ("EMERGENCY", "ALERT", "CRITICAL", "ERROR", "WARNING", "NOTICE", "INFO", "DEBUG")
@@ -32,9 +31,9 @@ class LinkHandler:
     """Owns the BoatLink; telemetry goes to the store and the hub, reports to `on_report`."""
 
     def __init__(self, link: BoatLink, device: str, store: Store, hub: LiveHub,
-                 view: ThreeDView | None, on_report: Callable[[BoatReport], None],
+                 on_report: Callable[[BoatReport], None],
                  on_reboot: Callable[[BoatRebooted], None]) -> None:
-        self.link, self.device, self.store, self.hub, self.view = link, device, store, hub, view
+        self.link, self.device, self.store, self.hub = link, device, store, hub
         self.on_report, self.on_reboot = on_report, on_reboot
         self.frame: RampFrame | None = None  # ramp frame for x, y of telemetry
         self.run: int | None = None
@@ -108,11 +107,9 @@ class LinkHandler:
         row = telemetry_row(t, self.frame, self.run)
         self.store.writer.put(row)
         self.telemetry, self.telemetry_at = row, time.monotonic()
+        if self.run is not None and self.run_t0 is None:
+            self.run_t0 = row["boat_time"]
         self.hub.publish("telemetry", row)
-        if self.view is not None and self.run is not None and row["x"] is not None:
-            if self.run_t0 is None:
-                self.run_t0 = row["boat_time"]
-            self.view.add_track_point(row["x"], row["y"], row["boat_time"] - self.run_t0)
 
 
 def telemetry_row(t: Telemetry, frame: RampFrame | None, run: int | None) -> TelemetryRow:

@@ -11,15 +11,13 @@ from usvstation.services.hub import LiveHub
 from usvstation.services.missions import MissionRecord
 from usvstation.services.plans import PlanService
 from usvstation.store.db import Store
-from usvstation.viz.view import ThreeDView
 
 
 class Runs:
     """Opens and closes runs in the store as missions become active and leave it."""
 
-    def __init__(self, store: Store, hub: LiveHub, plans: PlanService,
-                 view: ThreeDView | None) -> None:
-        self.store, self.hub, self.plans, self.view = store, hub, plans, view
+    def __init__(self, store: Store, hub: LiveHub, plans: PlanService) -> None:
+        self.store, self.hub, self.plans = store, hub, plans
         self.handler: LinkHandler | None = None
 
     async def begin(self, rec: MissionRecord) -> None:
@@ -34,10 +32,6 @@ class Runs:
             h.run, h.run_t0 = run, None
             h.frame = RampFrame(rec.origin["lat"], rec.origin["lon"],
                                 rec.origin["ramp_bearing_deg"])
-        job = self.plans.get(rec.plan_id)
-        if self.view is not None and job and job.get("plan"):
-            self.view.show_plan(job["plan"])
-            self.view.clear_track()
         self.hub.publish("run", {"id": run, "mission": rec.id, "state": "active"})
 
     async def end(self, rec: MissionRecord) -> None:

@@ -1,0 +1,48 @@
+"""The 3D view's feed from the live hub: a run's plan when it starts, then its track.
+
+The composition root (station.py) registers `ThreeDFeed.on_event` as a hub observer, so
+no service knows the view exists. x, y are ramp-frame metres; t counts from the run's
+first fix (the plan's t = 0 is its START), so the track and the plan share the time axis.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from typing import cast
+
+from usvstation.records import PlanDocument, RunEvent, TelemetryRow
+from usvstation.viz.view import ThreeDView
+
+
+class ThreeDFeed:
+    """Shows the running mission's plan and its boat-reported track in the 3D view."""
+
+    def __init__(self, view: ThreeDView,
+                 plan_of_mission: Callable[[str], PlanDocument | None]) -> None:
+        self.view, self.plan_of_mission = view, plan_of_mission
+        self.run: int | None = None
+        self.t0: float | None = None  # boat time of the run's first fix
+
+    def on_event(self, kind: str, data: Mapping[str, object]) -> None:
+        if kind == "run":
+            self._on_run(cast(RunEvent, data))
+        elif kind == "telemetry":
+            self._on_fix(cast(TelemetryRow, data))
+
+    def _on_run(self, ev: RunEvent) -> None:
+        if ev["state"] == "active":
+            self.run, self.t0 = ev["id"], None
+            plan = self.plan_of_mission(ev["mission"])
+            if plan is not None:
+                self.view.show_plan(plan)
+                self.view.clear_track()
+        elif ev["id"] == self.run:
+            self.run = None
+
+    def _on_fix(self, row: TelemetryRow) -> None:
+        if self.run is None or row["run"] != self.run or row["x"] is None or row["y"] is None \
+                or row["boat_time"] is None:
+            return
+        if self.t0 is None:
+            self.t0 = row["boat_time"]
+        self.view.add_track_point(row["x"], row["y"], row["boat_time"] - self.t0)
