@@ -78,17 +78,12 @@ def test_tracking_in_a_moving_frame_over_still_water_equals_the_apparent_current
     ship-fixed frame, the water flowing at +1 m/s past a fixed ramp (bench live's model)."""
     heading = math.atan2(-10.0, -85.0)
     fixed = DynamicVehicle(85.0, 10.0, heading, speed=0.5, env=Environment.with_current(1.0, 0.0))
-    moving = DynamicVehicle(85.0, 10.0, heading, speed=0.5,
-                            env=Environment.with_current(0.0, 0.0))
     motion = RampMotion(vx=-1.0)
-    # the same start relative to the water: 0.5 m/s along the heading plus the ship's way
-    gx, gy = 0.5 * math.cos(heading) - 1.0, 0.5 * math.sin(heading)
-    c, s = math.cos(heading), math.sin(heading)
-    moving.vessel._x[3:5] = (gx * c + gy * s, -gx * s + gy * c)
-    moving.set_frame(motion)
-    moving.observer.start(moving._meas, moving.vessel.thrust)
+    # the same start relative to the ramp: 0.5 m/s along the heading (plus the ship's way)
+    moving = DynamicVehicle(85.0, 10.0, heading, speed=0.5,
+                            env=Environment.with_current(0.0, 0.0), frame=motion)
     a = _sail(fixed, lambda v: (v.state.x, v.state.y))
-    b = _sail(moving, lambda v: motion.at(v.state.t).to_ramp(v.state.x, v.state.y))
+    b = _sail(moving, lambda v: (v.in_ramp().x, v.in_ramp().y))
     assert fixed.state.mission_complete and moving.state.mission_complete
     assert len(a) == len(b)
     assert max(math.hypot(p[0] - q[0], p[1] - q[1]) for p, q in zip(a, b, strict=True)) < 1e-6

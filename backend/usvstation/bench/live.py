@@ -1,9 +1,11 @@
 """`usv-station bench live`: the live loop on seeded episodes of the simulated sea.
 
 Each episode: the mother ship under way at 1-2 m/s with a stern ramp; in its ship-fixed
-ramp frame the water flows past at -V_ship, so the boat (the 3-DOF Otter with
-compensated AV-LOS, sim/dynamic.py) runs in that apparent current, and the plan is made
-for it. One vessel, scripted after the plan was made, turns (and changes speed) at t_m
+ramp frame the water flows past at -V_ship, and the plan is made for that apparent
+current. The boat (the 3-DOF Otter with compensated AV-LOS, sim/dynamic.py) sails still
+water over ground and tracks its plan in the moving ramp frame (sim/frame.py, the ramp's
+exact pose every control step), as the simulated boat does behind usv-link 2's pose
+stream. One vessel, scripted after the plan was made, turns (and changes speed) at t_m
 so that, kept to, it meets the boat on its planned path at t_p. The station's plan
 monitor (world/monitor.py) runs at the telemetry rate (5 Hz) on the truth; under policy
 `auto` every warning re-plans (world/replan.py, the station's IGA in-process) and the
@@ -32,6 +34,7 @@ from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.planning.plan import plan_scenario
 from usvstation.scenario import Scenario, parse_scenario
 from usvstation.sim.dynamic import DynamicVehicle
+from usvstation.sim.frame import RampMotion
 from usvstation.sim.vehicle import Waypoint
 from usvstation.world.monitor import AlertTracker, BoatState, MonitorConfig, TargetState, assess
 from usvstation.world.replan import ReplanImpossible, ReplanState, decide, replan_scenario
@@ -105,9 +108,10 @@ def to_waypoints(plan: dict[str, Any]) -> list[Waypoint]:
 def run_episode(scenario: Scenario, plan: dict[str, Any], traffic: Traffic, policy: str,
                 ship_speed: float) -> dict[str, Any]:
     v = scenario.vessel
-    env = Environment.with_current(ship_speed, 0.0)
+    # still water; the ramp frame (the sea's frame at t = 0) makes the ship's way along -x
     boat = DynamicVehicle(scenario.start.x, scenario.start.y, math.radians(180.0),
-                          speed=scenario.start.speed, env=env, accel=v.accel_max)
+                          speed=scenario.start.speed, env=Environment.with_current(0.0, 0.0),
+                          accel=v.accel_max, frame=RampMotion(vx=-ship_speed))
     boat.set_mission(to_waypoints(plan))
     boat.start()
     config = MonitorConfig(clearance_margin_m=v.length / 2 + v.compensation_radius,
@@ -122,7 +126,7 @@ def run_episode(scenario: Scenario, plan: dict[str, Any], traffic: Traffic, poli
     while not boat.state.mission_complete and t < end + TIMEOUT_S + sum(latencies):
         boat.step(DT)
         t += DT
-        s = boat.state
+        s = boat.in_ramp()
         tx, ty, tvx, tvy = traffic.at(t)
         min_clear = min(min_clear, math.hypot(s.x - tx, s.y - ty) - traffic.radius
                         - v.length / 2)
@@ -150,7 +154,7 @@ def run_episode(scenario: Scenario, plan: dict[str, Any], traffic: Traffic, poli
             for _ in range(max(1, round(latency / DT))):
                 boat.step(DT)
                 t += DT
-                s = boat.state
+                s = boat.in_ramp()
                 tx, ty, _, _ = traffic.at(t)
                 min_clear = min(min_clear, math.hypot(s.x - tx, s.y - ty) - traffic.radius
                                 - v.length / 2)
@@ -162,7 +166,7 @@ def run_episode(scenario: Scenario, plan: dict[str, Any], traffic: Traffic, poli
             t0, end = t, t + float(waypoints[-1, 2])
             tracker = AlertTracker(config)
             break
-    s = boat.state
+    s = boat.in_ramp()
     heading_err = abs((math.degrees(s.heading) - 180.0 + 180.0) % 360.0 - 180.0)
     offset = math.hypot(s.x, s.y)
     return {"contact": min_clear <= 0.0, "violation": min_clear < v.compensation_radius,
@@ -219,7 +223,8 @@ def run_live_bench(episodes: int = 50, seed: int = 1000,
         "episodes": len(rows["off"]), "seeds": [seed, seed + episodes - 1],
         "skipped_no_initial_plan": skipped,
         "setup": {"mother_ship_speed_m_s": [1.0, 2.0], "boat": "otter 3-DOF, compensated "
-                  "AV-LOS", "monitor_hz": 1 / MONITOR_EVERY, "swap": "in-process (the boat "
+                  "AV-LOS, still water, tracking in the moving ramp frame",
+                  "monitor_hz": 1 / MONITOR_EVERY, "swap": "in-process (the boat "
                   "sails on for the measured planning time, then the new mission starts)"},
         "policies": {"off": summarise(rows["off"], False),
                      "auto": summarise(rows["auto"], True)},

@@ -34,7 +34,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from usvstation.control.select import CONTROLLERS, make_controller
 from usvstation.dynamics import Environment, ThrustCommand, Vessel, VesselState, otter
@@ -68,7 +68,10 @@ class DynamicVehicle:
     def __init__(self, x: float, y: float, heading: float, *, speed: float = 0.0,
                  params: VesselParams | None = None, env: Environment | None = None,
                  accel: float = 0.5, guidance: str = "avlos_comp",
-                 controller: str = "pid") -> None:
+                 controller: str = "pid", frame: RampMotion | None = None) -> None:
+        """At (x, y) heading `heading` making `speed` along it; with `frame` these are in
+        the moving ramp frame (the start relative to the ship) and the vehicle tracks in it
+        from the start."""
         if guidance not in GUIDANCE_METHODS:
             raise ValueError(f"guidance: unknown method {guidance!r}; "
                              f"available: {', '.join(GUIDANCE_METHODS)}")
@@ -80,7 +83,17 @@ class DynamicVehicle:
         self.accel = accel
         self.guidance_method = guidance
         self.controller = controller
-        self.vessel = Vessel(self.params, VesselState(x, y, heading, speed))
+        motion = frame or RampMotion()
+        if motion.identity:
+            start = VesselState(x, y, heading, speed)
+        else:  # the ramp-frame start over ground: turned, plus the ramp point's velocity
+            wx, wy = motion.to_world(x, y)
+            psi = heading + motion.theta
+            px, py = motion.point_velocity(wx, wy)
+            gx, gy = speed * math.cos(psi) + px, speed * math.sin(psi) + py
+            c, s = math.cos(psi), math.sin(psi)
+            start = VesselState(wx, wy, psi, gx * c + gy * s, -gx * s + gy * c)
+        self.vessel = Vessel(self.params, start)
         if speed > 0.0:
             trim = 0.5 * self.params.surge_drag(speed)
             self.vessel.set_initial_thrust(ThrustCommand(trim, trim))
@@ -88,7 +101,7 @@ class DynamicVehicle:
         self.observer = DriftObserver(self.params)
         self.drift = EstimatedDrift(self.observer)
         self.keeper = StationKeeper(self.drift)
-        self.keeper.hold_at(x, y)
+        self.keeper.hold_at(x, y)  # ramp frame
         self._wps: list[Waypoint] = []
         self._guide = None
         self._phase = "idle"  # idle | track | hold | guided | done | aborted
@@ -102,9 +115,9 @@ class DynamicVehicle:
         self._complete = False
         self._idle_time = 0.0  # boat time spent held on the ramp (the model is frozen)
         self._clock = 0.0  # the vehicle's time: every dt stepped (BoatProtocol's boat time)
-        self._motion = RampMotion()  # the ramp frame in the world frame (identity: fixed)
+        self._motion = motion  # the ramp frame in the world frame (identity: fixed)
         self._on_ramp: tuple[float, float, float] | None = None  # ramp-frame x, y, psi
-        self._meas = Measurement.of(self.vessel.state)
+        self._meas = self._measure(0.0)
         self.observer.start(self._meas, self.vessel.thrust)
         self._state = self._report()
 
@@ -180,6 +193,15 @@ class DynamicVehicle:
         if reanchor and self._phase in ("hold", "idle"):
             self.keeper.hold_at(self._meas.x, self._meas.y)
         self._state = self._report()
+
+    def in_ramp(self) -> VehicleState:
+        """`state` as seen in the ramp frame of now (position, heading, velocity relative
+        to the ramp)."""
+        s = self._state
+        f = self._motion.at(self._clock)
+        m = f.measure(Measurement(s.x, s.y, s.heading, s.speed, s.course, s.yaw_rate, s.t))
+        return replace(s, x=m.x, y=m.y, heading=m.psi, speed=m.sog, course=m.cog,
+                       yaw_rate=m.r)
 
     def step(self, dt: float) -> None:
         if dt <= 0.0:
