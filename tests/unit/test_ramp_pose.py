@@ -112,12 +112,13 @@ def test_the_station_streams_the_pose_at_4_hz_labelled_in_boat_time():
     assert h.boat.ramp_poses == 0  # nothing set: nothing streamed
     h.station.set_ramp_pose(_pose(h, dt=-0.5, east=20.0, ve=1.5))
     sent0 = h.station.ramp_poses_sent
-    h.run(2.0)
-    assert 7 <= h.station.ramp_poses_sent - sent0 <= 9
+    h.run(3.0)
+    assert 11 <= h.station.ramp_poses_sent - sent0 <= 13
     assert h.boat.ramp_poses >= 1
+    assert not h.boat.ramp_stale  # the same pose again and again: the stream is alive
     m = h.boat.ramp
-    # labelled with the pose's own instant: 2.5 link seconds ago, 7.5 s of boat time
-    assert h.boat.boat_time - m.t0 == pytest.approx(7.5, abs=0.1)
+    # labelled with the pose's own instant: 3.5 link seconds ago, 10.5 s of boat time
+    assert h.boat.boat_time - m.t0 == pytest.approx(10.5, abs=0.1)
     # the frame: the origin 20 m east; +x on the origin's bearing (east); 1.5 m/s east
     assert (m.x, m.y, m.theta) == pytest.approx((20.0, 0.0, 0.0), abs=0.01)
     assert (m.vx, m.vy, m.omega) == pytest.approx((1.5, 0.0, 0.0), abs=1e-6)

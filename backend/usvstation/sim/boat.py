@@ -17,7 +17,8 @@ The moving ramp (USV_RAMP_POSE, protocol/README.md "The ramp pose stream"): the 
 waypoints are ramp-frame points (placed through the scenario origin, the ramp's pose at
 the sea's start); each pose, labelled with the boat uptime it refers to, becomes the
 vehicle's `RampMotion` (sim/frame.py), extrapolated with its velocity and yaw rate to
-every control step. Without a pose for `ramp_timeout_s` (link time) the pose is stale:
+every control step. Without a USV_RAMP_POSE frame for `ramp_timeout_s` (link time; a
+repeated pose counts, the station's own-ship age is its own alert) the pose is stale:
 the frame is frozen where it was extrapolated to, a RUNNING boat goes to HOLD over ground
 (a ship making way opens the distance; a dead-reckoned ramp that in truth slowed would
 not), and a STATUSTEXT says so; the next pose moves the frame again (the boat stays in
@@ -502,17 +503,19 @@ class BoatProtocol:
         self.guided_until = now + MS.from_wire(g.valid_ms)
 
     def _on_ramp_pose(self, p: Any, now: float) -> None:
-        """USV_RAMP_POSE: the newest pose (by its boat instant) moves the vehicle's frame."""
+        """USV_RAMP_POSE: every one keeps the stream fresh; the newest pose (by its boat
+        instant) moves the vehicle's frame."""
         t = MS.from_wire(p.time_boot_ms)
-        if self.ramp_rx is not None and t <= self.ramp.t0:
-            return  # older than the pose in use (reordered or repeated)
+        first, stale = self.ramp_rx is None, self.ramp_stale
+        self.ramp_rx = now
+        if not (first or stale) and t <= self.ramp.t0:
+            return  # not newer than the pose in use (repeated, or reordered)
         x, y = self.frame.to_ramp(E7.from_wire(p.lat), E7.from_wire(p.lon))
         theta = math.radians(float(self.frame.compass_to_heading_deg(
             CDEG.from_wire(p.bearing_cdeg))))
         vx, vy = self.frame.vector_to_ramp(p.ve, p.vn)
-        first, stale = self.ramp_rx is None, self.ramp_stale
         self.ramp = RampMotion(float(x), float(y), theta, float(vx), float(vy), -p.yaw_rate, t)
-        self.ramp_rx, self.ramp_stale = now, False
+        self.ramp_stale = False
         self.ramp_poses += 1
         self._set_frame(reanchor=first or stale)
         if stale:
