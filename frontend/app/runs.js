@@ -36,6 +36,9 @@ function addRunRows(rows) {
   updateTimeRange();
   if (shown.live && state.follow) {
     setDisplayTime(rows[rows.length - 1].boat_time - shown.t0);
+  } else {
+    // the slider may have moved while the rows loaded: draw the replayed boat where it is
+    setDisplayTime(state.displayT);
   }
 }
 

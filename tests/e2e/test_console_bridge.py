@@ -329,6 +329,7 @@ def test_replay_of_a_stored_run_at_20x(browser, chart_station, artifacts):
         expect(page.locator("#follow")).not_to_be_checked()
         run_s = rows[-1]["boat_time"] - rows[0]["boat_time"]
         page.wait_for_function(f"Number(document.getElementById('time').max) >= {run_s - 0.05}")
+        expect(page.locator("#track-points")).to_have_text(str(len(rows)))  # the run is drawn
         page.locator("#time").fill("0")
         start = page.locator(".replay-boat").bounding_box()
         first = page.evaluate("([lat, lon]) => { const p = usvConsole.map.map"

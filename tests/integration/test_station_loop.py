@@ -8,6 +8,7 @@ import math
 import signal
 import statistics
 import threading
+import time
 import xml.etree.ElementTree as ET
 
 import pytest
@@ -26,6 +27,14 @@ def station(tmp_path_factory):
     st.wait_link_up()
     yield st
     st.stop()
+
+
+def _wait_until(condition, timeout_s):
+    """Poll `condition` every 50 ms until it holds or `timeout_s` passes (a bound, not a
+    timing check: the assertions after it say what must hold)."""
+    deadline = time.monotonic() + timeout_s
+    while not condition() and time.monotonic() < deadline:
+        time.sleep(0.05)
 
 
 def test_plan_upload_start_complete_and_export(station):
@@ -78,6 +87,9 @@ def test_plan_upload_start_complete_and_export(station):
                            plan["metrics"]["duration_s"] / 5 + 30)
     assert mission["state"] == "completed"
     run = mission["run"]
+    # the websocket delivers the same events, in order; on a loaded machine a little later
+    _wait_until(lambda: any(e["type"] == "mission" and e["data"]["state"] == "completed"
+                            for e in list(events)), 30)
     done.set()
     listener.join(5)
 

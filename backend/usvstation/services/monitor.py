@@ -61,6 +61,11 @@ OWN_SHIP_AGE_S = (5.0, 10.0, 30.0)  # a silent own-ship position: advisory, caut
 # inside. A proposal the operator confirms is built afresh from the latest frame, so its
 # instant never passes while the operator reads it.
 SWAP_LEAD_S = 2.0
+# On a loaded machine planning and the upload can outlast the lead: a swap instant that
+# passed (or lies less than SWAP_UPLOAD_S ahead when the plan is ready) is planned again
+# from the latest frame with twice the lead, up to SWAP_ATTEMPTS plans in all.
+SWAP_UPLOAD_S = 0.5
+SWAP_ATTEMPTS = 3
 NO_HOT_SWAP = ("the boat link has no hot swap (usv-link 2, BoatService.swap_mission): "
                "the re-plan is kept as a plan; hold, abort and upload it to use it")
 
@@ -249,12 +254,14 @@ class ReplanService:
         m.spawn(self._plan(record, scenario, apply=action == "apply"))
 
     def _problem(self, record: dict[str, Any], a: Assessment, targets: list[TargetState],
-                 boat: BoatState, frame_velocity: tuple[float, float]) -> Scenario | None:
-        """The re-planning problem from this assessment, starting SWAP_LEAD_S ahead (never
-        more than a third of what is left of the plan); sets the record's swap instant, or
-        fails the record (saved) and returns None."""
+                 boat: BoatState, frame_velocity: tuple[float, float],
+                 lead_scale: float = 1.0) -> Scenario | None:
+        """The re-planning problem from this assessment, starting SWAP_LEAD_S x `lead_scale`
+        ahead (never more than a third of what is left of the plan); sets the record's swap
+        instant, or fails the record (saved) and returns None."""
         m = self.monitor
-        lead_s = min(SWAP_LEAD_S * max(1.0, m.world.sim_speed), float(a.path[-1, 2]) / 3.0)
+        lead_s = min(SWAP_LEAD_S * lead_scale * max(1.0, m.world.sim_speed),
+                     float(a.path[-1, 2]) / 3.0)
         boat_time = m.last_row["boat_time"] if m.last_row else 0.0
         try:
             scenario, dropped = replan_scenario(
@@ -273,17 +280,33 @@ class ReplanService:
     async def _plan(self, record: dict[str, Any], scenario: Scenario, apply: bool) -> None:
         m = self.monitor
         try:
-            job = await m.plans.submit(scenario, "iga", scenario.planner.seed
-                                       if scenario.planner else None)
-            record["plan_id"] = job["id"]
-            while job["status"] in ("queued", "running"):
-                await asyncio.sleep(0.02)
-            if job["status"] != "done":
-                record.update(state="failed", error=job["error"])
-            elif apply:
-                await self._swap(record)
-            else:
-                record["state"] = "proposed"
+            for attempt in range(1, SWAP_ATTEMPTS + 1):
+                record["attempts"] = attempt
+                job = await m.plans.submit(scenario, "iga", scenario.planner.seed
+                                           if scenario.planner else None)
+                record["plan_id"] = job["id"]
+                while job["status"] in ("queued", "running"):
+                    await asyncio.sleep(0.02)
+                if job["status"] != "done":
+                    record.update(state="failed", error=job["error"])
+                    return
+                if not apply:
+                    record["state"] = "proposed"
+                    return
+                if not self._instant_passed(record):
+                    await self._swap(record)
+                    if record["state"] != "failed" or not self._instant_passed(record):
+                        return
+                record.update(state="failed", error=(
+                    f"the swap instant {record['swap_at_ms']} ms passed before the boat had "
+                    f"the plan ({attempt} attempt{'s' if attempt > 1 else ''})"))
+                if attempt == SWAP_ATTEMPTS or m.last_inputs is None:
+                    return
+                # plan again from the latest frame, further ahead
+                scenario = self._problem(record, *m.last_inputs, lead_scale=2.0 ** attempt)
+                if scenario is None:
+                    return
+                record.update(state="planning", error=None)
         finally:
             self.state = ReplanState(in_flight=False,
                                      awaiting_operator=record["state"] == "proposed",
@@ -322,6 +345,13 @@ class ReplanService:
         self.state = ReplanState(last_t=self.state.last_t)
         self._save(record)
         return record
+
+    def _instant_passed(self, record: dict[str, Any]) -> bool:
+        """Whether the boat's clock is within an upload's time of the swap instant."""
+        link = getattr(self.monitor.boat, "link", None)
+        up = link.boat_uptime_ms() if link is not None else None
+        ahead_ms = MS.to_wire(SWAP_UPLOAD_S * max(1.0, self.monitor.world.sim_speed))
+        return up is not None and up + ahead_ms >= record["swap_at_ms"]
 
     async def _swap(self, record: dict[str, Any]) -> None:
         """Hot-swap the re-plan onto the boat (usv-link 2) and monitor it from then on."""
