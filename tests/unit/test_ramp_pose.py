@@ -166,3 +166,25 @@ def test_ramp_pose_values_are_checked_naming_the_field():
         RampPoseSample(0.0, 30.0, 114.0, 90.0, vn=float("nan"))
     with pytest.raises(ValueError, match="ramp_pose_period_s must be in"):
         LinkConfig(ramp_pose_period_s=0.8)
+
+
+def test_a_kinematic_boat_rides_the_moving_ramp_and_starts_by_ramp_distance():
+    h = Harness()
+    h.connect()
+    h.run(2.0)
+    h.station.set_ramp_pose(_pose(h, ve=1.5))  # the ramp end at the origin, 1.5 m/s east (+x)
+    h.run(10.0)
+    ramp = h.boat.ramp.at(h.boat.boat_time)
+    assert ramp.x == pytest.approx(15.0, abs=0.5)
+    s = h.boat.vehicle.state  # over ground: carried east with the ramp, its place kept on it
+    # (the first pose keeps the boat where it is over ground: it arrives a step after its
+    # instant, when the ramp has already moved 3 cm)
+    assert (s.x - ramp.x, s.y) == pytest.approx((85.0, 10.0), abs=0.05)
+    assert s.speed == pytest.approx(1.5) and s.course == pytest.approx(0.0)
+    x, _ = FRAME.to_ramp(h.station.telemetry.lat, h.station.telemetry.lon)
+    assert float(x) > 95.0  # what the station hears is the boat over ground
+    mission = make_mission(9)  # waypoint 0 at (85, 10) of the ramp frame: 15 m away over
+    h.station.start_upload(mission, h.t)  # ground, 0 m on the ramp
+    assert h.run(20.0, until=lambda: h.boat.active is not None)
+    h.station.send_command("start", h.t, mission.mission_id, mission.crc)
+    assert h.run(3.0, until=lambda: h.boat.state == S_RUNNING)

@@ -10,8 +10,8 @@ and reports what it holds (USV_MISSION_STATE) after every HEARTBEAT and on every
 
 It drives any `Vehicle` (sim/vehicle.py) through set_mission/start/hold/resume/abort/
 set_guidance/clear_guidance/step/state only, and `set_frame` where the vehicle has it
-(sim/dynamic.py). Time comes in as `now` (link clock, s); the boat clock (uptime) runs
-`sim_speed` times faster.
+(sim/dynamic.py, and KinematicVehicle). Time comes in as `now` (link clock, s); the boat
+clock (uptime) runs `sim_speed` times faster.
 
 The moving ramp (USV_RAMP_POSE, protocol/README.md "The ramp pose stream"): the mission's
 waypoints are ramp-frame points (placed through the scenario origin, the ramp's pose at
