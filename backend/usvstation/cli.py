@@ -208,18 +208,11 @@ def main(argv: list[str] | None = None) -> int:
     tune_allocator()
     args = build_parser().parse_args(argv)
     try:
-        if args.command == "serve":
-            return _cmd_serve(args)
-        if args.command == "plan":
-            return _cmd_plan(args)
-        if args.command == "bench":
-            return _cmd_bench(args)
-        if args.command == "sim":
-            return _cmd_sim(args)
-        if args.command == "link-key":
-            return _cmd_link_key(args)
-        if args.command == "campaign":
-            return _cmd_campaign(args)
+        command = {"serve": _cmd_serve, "plan": _cmd_plan, "bench": _cmd_bench,
+                   "sim": _cmd_sim, "link-key": _cmd_link_key,
+                   "campaign": _cmd_campaign}.get(args.command)
+        if command is not None:
+            return command(args)
     except CliError as exc:
         print(f"usv-station {args.command}: {exc}", file=sys.stderr)
         return exc.code

@@ -7,10 +7,10 @@ import json
 import logging
 import time
 from collections import deque
-from typing import Any
 
 from usvstation.config import ExposureError, Settings, Tokens, resolve_token
 from usvstation.link.protocol import BoatReport
+from usvstation.records import StationHealth
 from usvstation.scenario import Origin, Scenario, bundled_scenario_dir, parse_scenario
 from usvstation.services.alerts import LinkAlerts
 from usvstation.services.boat import BoatService
@@ -180,10 +180,10 @@ class Station:
         await self.world.use_scenario(scenario)
         self.hub.publish("scenario", {"name": scenario.name})
 
-    def health(self) -> dict[str, Any]:
+    def health(self) -> StationHealth:
         """Station health, no boat data: status ok or degraded with the reasons."""
         w = self.store.writer
-        reasons = []
+        reasons: list[str] = []
         if w.error is not None:
             reasons.append(f"telemetry writer: {w.error}")
         plans = self.plans.health()

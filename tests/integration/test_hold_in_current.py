@@ -5,7 +5,7 @@ import time
 
 from stationproc import StationProcess
 
-SIM_SPEED = "10"
+SIM_SPEED = "5"
 
 
 def _telemetry(c, run: int) -> list[dict]:
@@ -65,10 +65,10 @@ def test_after_hold_the_boat_stays_within_3_m_for_60_s_in_half_a_metre_per_secon
         # against where HOLD came. It was under way at about 2.7 m/s: 30 s to stop (it
         # overshoots about 4.5 m) and come back, then 60 s within 3 m.
         window = [x for x in rows if t_hold + 30.0 <= x["boat_time"] <= t_hold + 90.0]
-        # The fixes cover the minute. At --sim-speed 10 the modelled 57600 baud radio carries
-        # about three in four of the 5 Hz frames (the boat drops telemetry, never ACKs, when
-        # the line is full), so a gap reaches about 1 s of boat time.
-        assert window[0]["boat_time"] <= t_hold + 31.0 and window[-1]["boat_time"] >= t_hold + 89.0
+        # The fixes cover the minute. Sped up, the modelled 57600 baud radio may not carry
+        # every 5 Hz frame (the boat drops telemetry, never ACKs, when the line is full; more
+        # so when a loaded machine stalls the simulation), so a gap can reach a second or two.
+        assert window[0]["boat_time"] <= t_hold + 32.0 and window[-1]["boat_time"] >= t_hold + 88.0
         assert len(window) >= 60
         worst = max(math.hypot(x["x"] - at_hold["x"], x["y"] - at_hold["y"]) for x in window)
         assert worst <= 3.0, f"{worst:.2f} m from the hold point"

@@ -43,6 +43,21 @@ def test_seed_planner_plans_pass_the_checker(name):
     assert plan["metrics"]["min_clearance_m"] > 0.0
 
 
+@pytest.mark.parametrize("name", ["iga", *SEED_PLANNERS])
+def test_open_water_plans_have_no_clearance_and_match_the_plan_record(name):
+    """No obstacle: every planner plans it, with `min_clearance_m` null (nothing to clear),
+    and the plan has the shape the station stores and serves (records.PlanDocument)."""
+    from pydantic import TypeAdapter
+
+    from usvstation.records import PlanDocument
+
+    sc = load_scenario("case1").model_copy(update={"obstacles": []})
+    plan = plan_with(sc, name, 1)
+    assert plan["metrics"]["min_clearance_m"] is None
+    assert plan_violations(plan, sc) == []
+    assert TypeAdapter(PlanDocument).validate_python(plan) == plan  # nothing lost or changed
+
+
 @pytest.mark.parametrize("name", ["rrt-star", "vpf-rrt-star", "de-apf"])
 def test_same_seed_same_plan(name):
     sc = load_scenario("case1")

@@ -6,11 +6,12 @@ import asyncio
 import csv
 import io
 import json
-from typing import Annotated, Any, Literal
+from typing import Annotated, Literal
 
 from fastapi import APIRouter, Depends, HTTPException, Path, Query, Request, Response
 
 from usvstation.api.auth import require_token
+from usvstation.records import Alert, MonitorView, Replan
 from usvstation.store.alerts import ALERT_FIELDS
 
 router = APIRouter(tags=["alerts"])
@@ -23,7 +24,7 @@ async def list_alerts(
     request: Request,
     run: Annotated[int | None, Query(ge=1, le=2**63 - 1)] = None,
     limit: Annotated[int, Query(ge=1, le=100_000)] = 1000,
-) -> list[dict[str, Any]]:
+) -> list[Alert]:
     """Alerts, newest first: {id, time, level (advisory|caution|warning), kind, message,
     target_id, run_id, acknowledged}; of one run with `run`."""
     station = request.app.state.station
@@ -58,7 +59,7 @@ async def export_alerts(
 
 @router.post("/api/alerts/{alert_id}/ack", dependencies=Auth,
              responses={404: {"description": "no such alert"}})
-async def ack_alert(request: Request, alert_id: Id) -> dict[str, Any]:
+async def ack_alert(request: Request, alert_id: Id) -> Alert:
     """Acknowledge an alert (idempotent); the acknowledged record goes out on the websocket."""
     station = request.app.state.station
     record = await asyncio.to_thread(station.alerts.acknowledge, alert_id)
@@ -69,7 +70,7 @@ async def ack_alert(request: Request, alert_id: Id) -> dict[str, Any]:
 
 
 @router.get("/api/monitor")
-async def monitor(request: Request) -> dict[str, Any]:
+async def monitor(request: Request) -> MonitorView:
     """The latest assessment of the running plan: slip, cross-track, per-target DCPA, TCPA,
     encounter class and predicted clearance, the predicted path; null fields when idle."""
     m = request.app.state.station.monitor
@@ -80,7 +81,7 @@ async def monitor(request: Request) -> dict[str, Any]:
 @router.get("/api/replans")
 async def list_replans(
     request: Request, run: Annotated[int | None, Query(ge=1, le=2**63 - 1)] = None,
-) -> list[dict[str, Any]]:
+) -> list[Replan]:
     """Every re-plan: {id, created_at, run_id, alert_id, plan_id, policy, state (planning,
     proposed, planned, applied, rejected, failed), error, latency_ms, mission_id}."""
     m = request.app.state.station.monitor
@@ -93,7 +94,7 @@ async def list_replans(
 @router.post("/api/replans/{replan_id}/confirm", dependencies=Auth,
              responses={404: {"description": "no such re-plan"},
                         409: {"description": "not proposed, or the swap failed"}})
-async def confirm_replan(request: Request, replan_id: Id) -> dict[str, Any]:
+async def confirm_replan(request: Request, replan_id: Id) -> Replan:
     """The operator accepts a proposed re-plan: it is hot-swapped onto the boat."""
     return await request.app.state.station.monitor.replan.confirm(replan_id)
 
@@ -101,5 +102,5 @@ async def confirm_replan(request: Request, replan_id: Id) -> dict[str, Any]:
 @router.post("/api/replans/{replan_id}/reject", dependencies=Auth,
              responses={404: {"description": "no such re-plan"},
                         409: {"description": "not proposed"}})
-async def reject_replan(request: Request, replan_id: Id) -> dict[str, Any]:
+async def reject_replan(request: Request, replan_id: Id) -> Replan:
     return await request.app.state.station.monitor.replan.reject(replan_id)

@@ -9,6 +9,7 @@ by default frontend/ of the source checkout this package runs from.
 
 from __future__ import annotations
 
+from collections.abc import Awaitable, Callable
 from pathlib import Path
 
 from fastapi import FastAPI
@@ -84,28 +85,27 @@ def mount_docs(app: FastAPI, frontend_dir: Path) -> None:
     missing = [str(p) for p in (swagger / "swagger-ui-bundle.js", redoc / "redoc.standalone.js")
                if not p.is_file()]
 
-    def unavailable() -> PlainTextResponse:
-        return PlainTextResponse(f"API docs not available: {', '.join(missing)} missing; "
-                                 "run `npm ci` in frontend/\n", status_code=503)
-
-    @app.get("/docs", include_in_schema=False)
-    async def swagger_ui() -> HTMLResponse:
-        if missing:
-            return unavailable()
-        return _docs_page(get_swagger_ui_html(
-            openapi_url=app.openapi_url or "/openapi.json", title=title,
+    spec, icon = app.openapi_url or "/openapi.json", "/vendor/swagger-ui/favicon-32x32.png"
+    pages = {
+        "/docs": lambda: get_swagger_ui_html(
+            openapi_url=spec, title=title, swagger_favicon_url=icon,
             swagger_js_url="/vendor/swagger-ui/swagger-ui-bundle.js",
-            swagger_css_url="/vendor/swagger-ui/swagger-ui.css",
-            swagger_favicon_url="/vendor/swagger-ui/favicon-32x32.png"))
+            swagger_css_url="/vendor/swagger-ui/swagger-ui.css"),
+        "/redoc": lambda: get_redoc_html(
+            openapi_url=spec, title=title, redoc_favicon_url=icon, with_google_fonts=False,
+            redoc_js_url="/vendor/redoc/redoc.standalone.js"),
+    }
 
-    @app.get("/redoc", include_in_schema=False)
-    async def redoc_ui() -> HTMLResponse:
-        if missing:
-            return unavailable()
-        return _docs_page(get_redoc_html(
-            openapi_url=app.openapi_url or "/openapi.json", title=title,
-            redoc_js_url="/vendor/redoc/redoc.standalone.js",
-            redoc_favicon_url="/vendor/swagger-ui/favicon-32x32.png", with_google_fonts=False))
+    def page(render: Callable[[], HTMLResponse]) -> Callable[[], Awaitable[Response]]:
+        async def serve() -> Response:
+            if missing:
+                return PlainTextResponse(f"API docs not available: {', '.join(missing)} "
+                                         "missing; run `npm ci` in frontend/\n", status_code=503)
+            return _docs_page(render())
+        return serve
+
+    for path, render in pages.items():
+        app.add_api_route(path, page(render), methods=["GET"], include_in_schema=False)
 
     if not missing:
         for name, sub in DOCS_VENDOR.items():

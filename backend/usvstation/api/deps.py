@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, TypeVar
 
-from fastapi import Depends
+from fastapi import Depends, HTTPException
 from starlette.requests import HTTPConnection
 
 from usvstation.api.auth import require_operator, require_viewer
@@ -18,3 +18,11 @@ def _station(conn: HTTPConnection) -> Station:
 StationDep = Annotated[Station, Depends(_station)]
 Auth = [Depends(require_operator)]  # changes and commands
 Read = [Depends(require_viewer)]  # reading: the viewer token or the operator's
+T = TypeVar("T")
+
+
+def found(value: T | None, what: str) -> T:
+    """`value`, or a 404 "no {what}" when there is none."""
+    if value is None:
+        raise HTTPException(404, detail=f"no {what}")
+    return value

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from typing import Any
-
 from fastapi import (
     APIRouter,
 )
@@ -11,12 +9,12 @@ from fastapi import (
 from usvstation import __version__
 from usvstation.api.deps import StationDep
 from usvstation.api.models import (
-    Health,
+    StationHealth,
 )
 
 router = APIRouter()
 
 
-@router.get("/api/health", tags=["station"], response_model=Health)
-async def health(station: StationDep) -> dict[str, Any]:
+@router.get("/api/health", tags=["station"])
+async def health(station: StationDep) -> StationHealth:
     return {"version": __version__, **station.health(), "viser_port": station.view.port}

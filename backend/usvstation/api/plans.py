@@ -2,14 +2,12 @@
 
 from __future__ import annotations
 
-from typing import Any
-
 from fastapi import (
     APIRouter,
     HTTPException,
 )
 
-from usvstation.api.deps import Auth, Read, StationDep
+from usvstation.api.deps import Auth, Read, StationDep, found
 from usvstation.api.models import (
     Accepted,
     PlanJob,
@@ -48,30 +46,23 @@ async def post_plan(station: StationDep, req: PlanRequest | None = None) -> Acce
     return Accepted(id=job["id"], status=job["status"])
 
 
-@router.get("/api/plans", tags=["plans"], dependencies=Read, response_model=list[PlanSummary])
-async def list_plans(station: StationDep) -> list[dict[str, Any]]:
+@router.get("/api/plans", tags=["plans"], dependencies=Read)
+async def list_plans(station: StationDep) -> list[PlanSummary]:
     return [station.plans.summary(j) for j in station.plans.jobs.values()]
 
 
 @router.delete("/api/plans/{plan_id}", tags=["plans"], dependencies=Auth,
-            response_model=PlanSummary,
             responses={404: {"description": "no such plan"},
                        409: {"description": "the plan already ended"}})
-async def cancel_plan(station: StationDep, plan_id: str) -> dict[str, Any]:
+async def cancel_plan(station: StationDep, plan_id: str) -> PlanSummary:
     """Cancel a queued or running plan: it ends `cancelled`, its worker is replaced."""
     try:
         job = await station.plans.cancel(plan_id)
     except PlanNotCancellable as exc:
         raise HTTPException(409, detail=str(exc)) from None
-    if job is None:
-        raise HTTPException(404, detail=f"no plan {plan_id!r}")
-    return station.plans.summary(job)
+    return station.plans.summary(found(job, f"plan {plan_id!r}"))
 
 
-@router.get("/api/plans/{plan_id}", tags=["plans"], dependencies=Read, response_model=PlanJob)
-async def get_plan(station: StationDep, plan_id: str) -> dict[str, Any]:
-    job = station.plans.get(plan_id)
-    if job is None:
-        raise HTTPException(404, detail=f"no plan {plan_id!r}")
-    return {k: job[k] for k in ("id", "status", "plan", "error", "created_at", "planner",
-                                "seed", "scenario")}
+@router.get("/api/plans/{plan_id}", tags=["plans"], dependencies=Read)
+async def get_plan(station: StationDep, plan_id: str) -> PlanJob:
+    return found(station.plans.get(plan_id), f"plan {plan_id!r}")

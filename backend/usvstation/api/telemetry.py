@@ -18,7 +18,7 @@ from fastapi.responses import Response, StreamingResponse
 from usvstation.api.deps import Read, StationDep
 from usvstation.api.models import (
     RunRow,
-    TelemetryRow,
+    StoredTelemetryRow,
 )
 from usvstation.services.export import FORMATS, export_chunks, planned_route
 
@@ -44,13 +44,13 @@ async def _in_thread(chunks: Any) -> AsyncIterator[str]:
 router = APIRouter()
 
 
-@router.get("/api/runs", tags=["telemetry"], dependencies=Read, response_model=list[RunRow])
-async def list_runs(station: StationDep) -> list[dict[str, Any]]:
+@router.get("/api/runs", tags=["telemetry"], dependencies=Read)
+async def list_runs(station: StationDep) -> list[RunRow]:
     return await asyncio.to_thread(station.store.runs)
 
 
 @router.get("/api/telemetry", tags=["telemetry"], dependencies=Read,
-         response_model=list[TelemetryRow],
+         response_model=list[StoredTelemetryRow],
          responses={200: {"headers": {"X-Next-After": {
              "description": "present when the page is full: pass it as `after` for the "
              "next page", "schema": {"type": "integer"}}}}})

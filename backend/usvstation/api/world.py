@@ -2,15 +2,15 @@
 
 from __future__ import annotations
 
-from typing import Any
-
 from fastapi import APIRouter, Request
+
+from usvstation.records import WorldScenario, WorldSnapshot
 
 router = APIRouter(tags=["world"])
 
 
 @router.get("/api/world")
-async def get_world(request: Request) -> dict[str, Any]:
+async def get_world(request: Request) -> WorldSnapshot:
     """Own ship {lat, lon, heading_deg, course_deg, speed, age_s}; the ramp's pose; targets
     [{id, source, mmsi, name, lat, lon, x, y, vx, vy, rvx, rvy, radius, age_s, ...}] predicted
     to now in the ramp frame (vx, vy over ground, rvx, rvy relative to the ramp, m/s);
@@ -19,7 +19,7 @@ async def get_world(request: Request) -> dict[str, Any]:
 
 
 @router.get("/api/world/scenario")
-async def get_world_scenario(request: Request) -> dict[str, Any]:
+async def get_world_scenario(request: Request) -> WorldScenario:
     """The working scenario against the world as it is now: {scenario, dropped}; its
     obstacles are the world's targets in the ramp frame with their velocities relative to
     the ramp, the ship's motion an apparent current. POST it to /api/plans to plan for the

@@ -18,16 +18,23 @@ import asyncio
 import secrets
 import time
 import uuid
-from collections.abc import Awaitable, Callable
-from typing import Any
+from collections.abc import Awaitable, Callable, Coroutine
 
 from usvstation.config import Settings, resolve_link_key
 from usvstation.geo import RampFrame
 from usvstation.link import wire
-from usvstation.link.mission import MissionError, MissionItem, mission_from_plan
+from usvstation.link.mission import Mission, MissionError, MissionItem, mission_from_plan
 from usvstation.link.protocol import BoatRebooted, BoatReport, LinkConfig, UploadProgress
 from usvstation.link.station import BoatLink, LinkError
 from usvstation.link.transport import ByteStream, open_stream
+from usvstation.records import (
+    BoatSnapshot,
+    CommandAnswer,
+    ItemDifference,
+    MissionRow,
+    MissionView,
+    Readback,
+)
 from usvstation.scenario import Scenario
 from usvstation.services.boat_link import LinkHandler
 from usvstation.services.hub import LiveHub
@@ -119,8 +126,8 @@ class BoatService:
         return self.handler.link
 
     # --- state for the API -----------------------------------------------------------------
-    def snapshot(self) -> dict[str, Any]:
-        snap = self.handler.snapshot() if self.handler else {
+    def snapshot(self) -> BoatSnapshot:
+        snap: BoatSnapshot = self.handler.snapshot() if self.handler else {
             "link": {"up": False, "device": self.device}, "boat": None, "telemetry": None,
             "status": []}
         snap["link"]["simulated"] = self.sim is not None
@@ -133,13 +140,13 @@ class BoatService:
         return next((r for r in reversed(self.missions.values())
                      if r.state in (MissionStatus.ACTIVE, MissionStatus.VERIFIED)), None)
 
-    def get_mission(self, mission_id: str) -> dict[str, Any] | None:
+    def get_mission(self, mission_id: str) -> MissionView | None:
         rec = self.missions.get(mission_id)
         return rec.public() if rec else None
 
     # --- missions ---------------------------------------------------------------------------
     async def create_mission(self, plan_id: str,
-                             swap_at_ms: int | None = None) -> dict[str, Any]:
+                             swap_at_ms: int | None = None) -> MissionView:
         """Upload a plan: staged for START, or (boat RUNNING) hot-swapped at `swap_at_ms` of
         boat uptime, by default the earliest instant the upload surely makes."""
         job = self.plans.get(plan_id)
@@ -177,7 +184,7 @@ class BoatService:
         self._spawn(self._upload(rec, mission, swap_at_ms))
         return rec.public()
 
-    async def swap_mission(self, plan_id: str, swap_at_ms: int) -> dict[str, Any]:
+    async def swap_mission(self, plan_id: str, swap_at_ms: int) -> MissionView:
         """Hot swap (usv-link 2): the RUNNING boat replaces its mission by `plan_id`'s at
         `swap_at_ms` of its uptime, where the plan's t = 0 lies. Returns once the boat
         verified and scheduled it; 409 when it did not (the old mission runs on)."""
@@ -200,7 +207,7 @@ class BoatService:
             raise BoatError(503, "the boat's clock is not known yet (no TIMESYNC)")
         return up + 5000 + int(3 * 256 * 100 * 10 * 1000 / self.settings.baud)
 
-    async def _upload(self, rec: MissionRecord, mission: Any, swap_at_ms: int) -> None:
+    async def _upload(self, rec: MissionRecord, mission: Mission, swap_at_ms: int) -> None:
         link = self.link
         assert link is not None
 
@@ -230,7 +237,7 @@ class BoatService:
             rec.apply(report)  # the boat's word wins (a lost END ACK, a swap)
         await self._save(rec)
 
-    async def verify(self, mission_id: str) -> dict[str, Any]:
+    async def verify(self, mission_id: str) -> Readback:
         """Read the boat's copy back and compare it item by item with what was sent."""
         rec = self.missions.get(mission_id)
         if rec is None:
@@ -245,13 +252,13 @@ class BoatService:
                 raise BoatError(409, f"mission {mission_id}: {result.error}")
             raise BoatError(504, f"mission {mission_id}: {result.error}")
         sent = [MissionItem(**it) for it in rec.items]
-        diffs = [{"seq": i, "sent": a.as_dict(), "boat": b.as_dict()}
+        diffs: list[ItemDifference] = [{"seq": i, "sent": a.as_dict(), "boat": b.as_dict()}
                  for i, (a, b) in enumerate(zip(sent, result.items, strict=True)) if a != b]
         return {"id": rec.id, "wire_id": rec.wire_id, "count": rec.total,
                 "identical": not diffs, "differences": diffs}
 
     # --- commands ---------------------------------------------------------------------------
-    async def command(self, name: str, mission_id: str | None = None) -> dict[str, Any]:
+    async def command(self, name: str, mission_id: str | None = None) -> CommandAnswer:
         link = self._require_link()
         wire_id = crc = 0
         rec: MissionRecord | None = None
@@ -282,7 +289,7 @@ class BoatService:
                 break
             await asyncio.sleep(0.01)
         report = link.report
-        answer = {"command": name, "result": _result_name(outcome.result),
+        answer: CommandAnswer = {"command": name, "result": _result_name(outcome.result),
                   "reason": outcome.reason or None,
                   "state": report.state if report is not None else None,
                   "mission": rec.id if rec else None}
@@ -317,7 +324,7 @@ class BoatService:
     async def _end_run(self, rec: MissionRecord) -> None:
         await self.runs.end(rec)
 
-    def _spawn(self, coro: Any) -> None:
+    def _spawn(self, coro: Coroutine[object, object, object]) -> None:
         task = asyncio.get_running_loop().create_task(coro)
         self._tasks.add(task)
         task.add_done_callback(self._tasks.discard)
@@ -327,7 +334,7 @@ class BoatService:
         self.hub.publish("mission", rec.public())
 
 
-def recover_missions(store: Store) -> dict[str, dict[str, Any]]:
+def recover_missions(store: Store) -> dict[str, MissionRow]:
     """Missions from the database after a restart. An upload the restart interrupted is
     failed (the boat's next report revives it if the boat took it whole); every other
     state is kept until the boat's first report derives it again."""

@@ -19,6 +19,7 @@ from usvstation.link.protocol import (
     TelemetryReceived,
 )
 from usvstation.link.station import BoatLink
+from usvstation.records import BoatSnapshot, StatusText, TelemetryRow
 from usvstation.services.hub import LiveHub
 from usvstation.store.db import Store, utc_now
 from usvstation.viz.view import ThreeDView
@@ -40,10 +41,10 @@ class LinkHandler:
         self.moving_frame: Callable[[], RampFrame | None] | None = None
         self.run: int | None = None
         self.run_t0: float | None = None
-        self.telemetry: dict[str, Any] | None = None
+        self.telemetry: TelemetryRow | None = None
         self.telemetry_at: float | None = None
         self.report_at: float | None = None
-        self.status: list[dict[str, Any]] = []
+        self.status: list[StatusText] = []
         self.frames = 0
         link.add_listener(self._on_event)
 
@@ -51,7 +52,7 @@ class LinkHandler:
     def link_up(self) -> bool:
         return self.link.link_up
 
-    def snapshot(self) -> dict[str, Any]:
+    def snapshot(self) -> BoatSnapshot:
         now = time.monotonic()
         p = self.link.protocol
         rep = p.report
@@ -100,7 +101,7 @@ class LinkHandler:
         elif isinstance(ev, StatusTextReceived):
             sev = SEVERITIES[ev.severity] if 0 <= ev.severity < len(SEVERITIES) \
                 else str(ev.severity)
-            item = {"time": utc_now(), "severity": sev, "text": ev.text}
+            item: StatusText = {"time": utc_now(), "severity": sev, "text": ev.text}
             self.status = [*self.status[-(STATUS_KEPT - 1):], item]
             self.hub.publish("status", item)
 
@@ -117,7 +118,7 @@ class LinkHandler:
             self.view.add_track_point(row["x"], row["y"], row["boat_time"] - self.run_t0)
 
 
-def telemetry_row(t: Telemetry, frame: RampFrame | None, run: int | None) -> dict[str, Any]:
+def telemetry_row(t: Telemetry, frame: RampFrame | None, run: int | None) -> TelemetryRow:
     """A position report as a stored row: SI units, compass degrees, ramp-frame x, y."""
     x = y = ramp_heading = None
     if frame is not None:

@@ -12,10 +12,10 @@ import csv
 import io
 import json
 from collections.abc import Iterator
-from typing import Any
 from xml.sax.saxutils import escape
 
 from usvstation.geo import RampFrame
+from usvstation.records import PlanJob, RoutePoint, RunRow, StoredTelemetryRow
 from usvstation.store.db import TELEMETRY_COLUMNS
 
 FORMATS = {
@@ -27,16 +27,15 @@ FORMATS = {
 COLUMNS = ("id", *TELEMETRY_COLUMNS)
 
 
-def planned_route(plan_job: dict[str, Any] | None) -> list[dict[str, Any]]:
+def planned_route(plan_job: PlanJob | None) -> list[RoutePoint]:
     """The plan's waypoints with lat/lon (empty when there is no plan or no origin)."""
-    if not plan_job or not plan_job.get("plan"):
-        return []
-    origin = plan_job["scenario"].get("origin")
-    if not origin:
+    plan = plan_job["plan"] if plan_job else None
+    origin = plan_job["scenario"].get("origin") if plan_job else None
+    if plan is None or not isinstance(origin, dict):
         return []
     frame = RampFrame(origin["lat"], origin["lon"], origin["ramp_bearing_deg"])
-    out = []
-    for i, w in enumerate(plan_job["plan"]["waypoints"]):
+    out: list[RoutePoint] = []
+    for i, w in enumerate(plan["waypoints"]):
         lat, lon = frame.to_geodetic(w["x"], w["y"])
         out.append({"index": i, "lat": float(lat), "lon": float(lon), "t": w["t"],
                     "speed": w["speed"],
@@ -44,15 +43,18 @@ def planned_route(plan_job: dict[str, Any] | None) -> list[dict[str, Any]]:
     return out
 
 
-def export_chunks(fmt: str, chunks: Iterator[list[dict]], run: dict[str, Any] | None,
-                  route: list[dict[str, Any]]) -> Iterator[str]:
+Chunks = Iterator[list[StoredTelemetryRow]]
+
+
+def export_chunks(fmt: str, chunks: Chunks, run: RunRow | None,
+                  route: list[RoutePoint]) -> Iterator[str]:
     """Text pieces of the export in format `fmt`."""
     return {"csv": _csv, "jsonl": _jsonl, "gpx": _gpx, "geojson": _geojson}[fmt](
         chunks, run, route
     )
 
 
-def _csv(chunks: Iterator[list[dict]], run: dict | None, route: list) -> Iterator[str]:
+def _csv(chunks: Chunks, run: RunRow | None, route: list[RoutePoint]) -> Iterator[str]:
     buf = io.StringIO()
     writer = csv.writer(buf, lineterminator="\n")
     writer.writerow(COLUMNS)
@@ -65,12 +67,12 @@ def _csv(chunks: Iterator[list[dict]], run: dict | None, route: list) -> Iterato
     yield buf.getvalue()
 
 
-def _jsonl(chunks: Iterator[list[dict]], run: dict | None, route: list) -> Iterator[str]:
+def _jsonl(chunks: Chunks, run: RunRow | None, route: list[RoutePoint]) -> Iterator[str]:
     for rows in chunks:
         yield "".join(json.dumps(r, separators=(",", ":")) + "\n" for r in rows)
 
 
-def _gpx(chunks: Iterator[list[dict]], run: dict | None, route: list) -> Iterator[str]:
+def _gpx(chunks: Chunks, run: RunRow | None, route: list[RoutePoint]) -> Iterator[str]:
     name = f"run {run['id']}" if run else "telemetry"
     yield ('<?xml version="1.0" encoding="UTF-8"?>\n'
            '<gpx version="1.1" creator="usv-station" xmlns="http://www.topografix.com/GPX/1/1">\n'
@@ -89,7 +91,7 @@ def _gpx(chunks: Iterator[list[dict]], run: dict | None, route: list) -> Iterato
     yield "</trkseg></trk>\n</gpx>\n"
 
 
-def _trkpt(r: dict) -> str:
+def _trkpt(r: StoredTelemetryRow) -> str:
     lat = r["lat"] if r["lat"] is not None else 0.0
     lon = r["lon"] if r["lon"] is not None else 0.0
     extra = ""
@@ -101,7 +103,7 @@ def _trkpt(r: dict) -> str:
             "</trkpt>\n")
 
 
-def _geojson(chunks: Iterator[list[dict]], run: dict | None, route: list) -> Iterator[str]:
+def _geojson(chunks: Chunks, run: RunRow | None, route: list[RoutePoint]) -> Iterator[str]:
     props = {"name": f"run {run['id']}" if run else "telemetry", "kind": "track"}
     if run:
         props.update(run=run["id"], started_at=run["started_at"], ended_at=run["ended_at"])

@@ -12,12 +12,13 @@ import asyncio
 import json
 import logging
 from collections import deque
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any
 
 log = logging.getLogger(__name__)
 QUEUE_SIZE = 256
+# An event's data: one of the station's records (usvstation/records.py), sent as JSON.
+Payload = Mapping[str, object]
 MAX_OVERFLOWS = 2000  # consecutive drops before a client is cut off
 
 
@@ -49,7 +50,7 @@ class LiveHub:
         self.subscribers: set[Subscriber] = set()
         self.published = 0
         # in-process observers (kind, data), called synchronously; their faults are contained
-        self.observers: list[Callable[[str, dict[str, Any]], None]] = []
+        self.observers: list[Callable[[str, Payload], None]] = []
 
     def subscribe(self) -> Subscriber:
         sub = Subscriber()
@@ -61,7 +62,7 @@ class LiveHub:
         sub.closed = True
         sub.ready.set()
 
-    def publish(self, kind: str, data: dict[str, Any]) -> None:
+    def publish(self, kind: str, data: Payload) -> None:
         """Queue an event for every client; O(clients), never awaits."""
         text = json.dumps({"type": kind, "data": data}, separators=(",", ":"))
         self.published += 1

@@ -12,10 +12,11 @@ from __future__ import annotations
 
 import enum
 from dataclasses import dataclass, field
-from typing import Any
 
+from usvstation.geo import RampFrame
 from usvstation.link.mission import Mission, MissionItem, Origin
 from usvstation.link.protocol import MissionState
+from usvstation.records import MissionRow, MissionView, RampOrigin
 
 
 class MissionStatus(enum.StrEnum):
@@ -93,7 +94,7 @@ class MissionRecord:
     plan_id: str
     wire_id: int
     created_at: str
-    origin: dict[str, float]
+    origin: RampOrigin
     items: list[dict[str, int]]
     state: MissionStatus = MissionStatus.UPLOADING
     sent: int = 0
@@ -125,7 +126,7 @@ class MissionRecord:
         """The run's id once the store opened it (None while it is only claimed: -1)."""
         return self.run if self.run is not None and self.run > 0 else None
 
-    def to_row(self) -> dict[str, Any]:
+    def to_row(self) -> MissionRow:
         return {"id": self.id, "plan_id": self.plan_id, "wire_id": self.wire_id,
                 "created_at": self.created_at, "state": self.state.value,
                 "progress": {"sent": self.sent, "acked": self.acked, "total": self.total},
@@ -133,7 +134,7 @@ class MissionRecord:
                 "items": self.items}
 
     @classmethod
-    def from_row(cls, row: dict[str, Any]) -> MissionRecord:
+    def from_row(cls, row: MissionRow) -> MissionRecord:
         try:
             state = MissionStatus(row["state"])
         except ValueError:
@@ -142,7 +143,7 @@ class MissionRecord:
                    row["origin"], row["items"], state, row["progress"]["sent"],
                    row["progress"]["acked"], row.get("error"), row.get("run"))
 
-    def public(self) -> dict[str, Any]:
+    def public(self) -> MissionView:
         return {"id": self.id, "plan_id": self.plan_id, "state": self.state.value,
                 "progress": {"sent": self.sent, "acked": self.acked, "total": self.total},
                 "error": self.error, "created_at": self.created_at, "wire_id": self.wire_id,
@@ -161,7 +162,5 @@ class MissionRecord:
         return True
 
 
-def _frame(origin: dict[str, float]) -> Any:
-    from usvstation.geo import RampFrame
-
+def _frame(origin: RampOrigin) -> RampFrame:
     return RampFrame(origin["lat"], origin["lon"], origin["ramp_bearing_deg"])

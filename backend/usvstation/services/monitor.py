@@ -18,15 +18,23 @@ import contextlib
 import logging
 import time
 import uuid
-from collections.abc import Callable
-from typing import Any
+from collections.abc import Callable, Coroutine
+from typing import cast
 
 import numpy as np
 
 from usvstation.geometry import MS
+from usvstation.records import (
+    Alert,
+    MonitorAssessment,
+    PlanJob,
+    Replan,
+    RunEvent,
+    TelemetryRow,
+)
 from usvstation.scenario import Scenario, parse_scenario
 from usvstation.services.boat import BoatError, BoatService
-from usvstation.services.hub import LiveHub
+from usvstation.services.hub import LiveHub, Payload
 from usvstation.services.plans import PlanService
 from usvstation.services.world import WorldService
 from usvstation.store.alerts import AlertStore
@@ -85,9 +93,9 @@ class MonitorService:
         self.t0: float | None = None  # boat time of the plan's t = 0
         self.config = MonitorConfig()
         self.tracker = AlertTracker(self.config)
-        self.last: dict[str, Any] | None = None
+        self.last: MonitorAssessment | None = None
         self.last_assessment: Assessment | None = None
-        self.last_row: dict[str, Any] | None = None
+        self.last_row: TelemetryRow | None = None
         # the latest assessment with what it was made from: (assessment, targets, boat,
         # ramp-frame velocity of the ship), for a re-plan built at any moment
         self.last_inputs: tuple[Assessment, list[TargetState], BoatState,
@@ -105,29 +113,28 @@ class MonitorService:
             with contextlib.suppress(asyncio.CancelledError, Exception):
                 await task
 
-    def spawn(self, coro: Any) -> None:
+    def spawn(self, coro: Coroutine[object, object, object]) -> None:
         task = asyncio.create_task(coro)
         self._tasks.add(task)
         task.add_done_callback(self._tasks.discard)
 
     # --- events ------------------------------------------------------------------------------
-    def on_event(self, kind: str, data: dict[str, Any]) -> None:
+    def on_event(self, kind: str, data: Payload) -> None:
         if kind == "telemetry":
-            self.on_telemetry(data)
+            self.on_telemetry(cast(TelemetryRow, data))
         elif kind == "run":
-            if data.get("state") == "active":
-                self.arm(data["id"], data.get("mission"))
-            elif data.get("id") == self.run:
+            run = cast(RunEvent, data)
+            if run["state"] == "active":
+                self.arm(run["id"], run.get("mission"))
+            elif run["id"] == self.run:
                 self.disarm()
 
     def arm(self, run: int, mission_id: str | None) -> None:
         """A run started: monitor its plan; the scenario's obstacles start where the plan
         assumed them (their t = 0 is the plan's start)."""
         mission = self.boat.missions.get(mission_id or "")
-        plan_id = mission.get("plan_id") if isinstance(mission, dict) \
-            else getattr(mission, "plan_id", None)  # a dict here, a record with usv-link 2
-        job = self.plans.get(plan_id) if plan_id else None
-        if not job or not job.get("plan"):
+        job = self.plans.get(mission.plan_id) if mission is not None else None
+        if not job or not job["plan"]:
             return
         self.use_plan(job, run)
         pose = self.world.world.ramp(self.world.clock())
@@ -136,11 +143,14 @@ class MonitorService:
                 self.world.clock(), [(o.x, o.y, o.radius, o.vx, o.vy)
                                      for o in self.scenario.obstacles], pose.frame)
 
-    def use_plan(self, job: dict[str, Any], run: int | None) -> None:
+    def use_plan(self, job: PlanJob, run: int | None) -> None:
         """Monitor `job`'s plan from the next frame on (a new run, or a swapped re-plan)."""
         self.run = run
         self.scenario = parse_scenario(job["scenario"])
-        wps = job["plan"]["waypoints"]
+        plan = job["plan"]
+        if plan is None:
+            raise ValueError(f"plan {job['id']} is {job['status']}: nothing to monitor")
+        wps = plan["waypoints"]
         self.waypoints = np.array([[w["x"], w["y"], w["t"]] for w in wps], dtype=float)
         v = self.scenario.vessel
         self.config = MonitorConfig(
@@ -153,7 +163,7 @@ class MonitorService:
     def disarm(self) -> None:
         self.run, self.waypoints, self.t0 = None, None, None
 
-    def on_telemetry(self, row: dict[str, Any]) -> None:
+    def on_telemetry(self, row: TelemetryRow) -> None:
         if self.waypoints is None or row.get("run") != self.run or row.get("lat") is None:
             return
         if self.t0 is None:
@@ -200,15 +210,15 @@ class MonitorService:
             self.last = self.summary(a)
             self.hub.publish("monitor", self.last)
 
-    def raise_alert(self, event: AlertEvent) -> dict[str, Any]:
-        record = {"id": uuid.uuid4().hex[:12], "time": utc_now(), "level": event.level,
+    def raise_alert(self, event: AlertEvent) -> Alert:
+        record: Alert = {"id": uuid.uuid4().hex[:12], "time": utc_now(), "level": event.level,
                   "kind": event.kind, "message": event.message, "target_id": event.target_id,
                   "run_id": self.run, "acknowledged": False}
         self.spawn(asyncio.to_thread(self.alerts.add, record))
         self.hub.publish("alert", record)
         return record
 
-    def summary(self, a: Assessment) -> dict[str, Any]:
+    def summary(self, a: Assessment) -> MonitorAssessment:
         step = max(1, len(a.path) // 60)
         return {
             "run": self.run, "plan_time_s": round(a.plan_time_s, 2), "slip_s": round(a.slip_s, 2),
@@ -229,11 +239,11 @@ class ReplanService:
 
     def __init__(self, monitor: MonitorService, policy: Policy) -> None:
         self.monitor, self.policy = monitor, policy
-        self.replans: dict[str, dict[str, Any]] = {}
+        self.replans: dict[str, Replan] = {}
         self.state = ReplanState()
         self._t_event: dict[str, float] = {}
 
-    def on_warning(self, alert: dict[str, Any], a: Assessment, targets: list[TargetState],
+    def on_warning(self, alert: Alert, a: Assessment, targets: list[TargetState],
                    boat: BoatState, frame_velocity: tuple[float, float]) -> None:
         m = self.monitor
         now = m.clock()
@@ -241,7 +251,7 @@ class ReplanService:
         if action == "none" or m.scenario is None:
             return
         self.state = ReplanState(in_flight=True, last_t=now)
-        record = {"id": uuid.uuid4().hex[:12], "created_at": utc_now(), "run_id": m.run,
+        record: Replan = {"id": uuid.uuid4().hex[:12], "created_at": utc_now(), "run_id": m.run,
                   "alert_id": alert["id"], "plan_id": None, "policy": self.policy,
                   "state": "planning", "error": None, "latency_ms": None, "mission_id": None,
                   "dropped_targets": []}
@@ -253,7 +263,7 @@ class ReplanService:
             return
         m.spawn(self._plan(record, scenario, apply=action == "apply"))
 
-    def _problem(self, record: dict[str, Any], a: Assessment, targets: list[TargetState],
+    def _problem(self, record: Replan, a: Assessment, targets: list[TargetState],
                  boat: BoatState, frame_velocity: tuple[float, float],
                  lead_scale: float = 1.0) -> Scenario | None:
         """The re-planning problem from this assessment, starting SWAP_LEAD_S x `lead_scale`
@@ -277,7 +287,7 @@ class ReplanService:
         self._save(record)
         return scenario
 
-    async def _plan(self, record: dict[str, Any], scenario: Scenario, apply: bool) -> None:
+    async def _plan(self, record: Replan, scenario: Scenario, apply: bool) -> None:
         m = self.monitor
         try:
             for attempt in range(1, SWAP_ATTEMPTS + 1):
@@ -313,12 +323,17 @@ class ReplanService:
                                      last_t=self.state.last_t)
             self._save(record)
 
-    async def confirm(self, replan_id: str) -> dict[str, Any]:
+    def _proposed(self, replan_id: str) -> Replan:
+        """The re-plan awaiting the operator; 404 or 409 otherwise."""
         record = self.replans.get(replan_id)
         if record is None:
             raise BoatError(404, f"no re-plan {replan_id!r}")
         if record["state"] != "proposed":
             raise BoatError(409, f"re-plan {replan_id} is {record['state']}, not proposed")
+        return record
+
+    async def confirm(self, replan_id: str) -> Replan:
+        record = self._proposed(replan_id)
         if self.monitor.last_inputs is None or self.monitor.scenario is None:
             raise BoatError(409, f"re-plan {replan_id}: no running mission to re-plan")
         # the proposal was a preview: plan the same problem afresh from the latest frame,
@@ -335,25 +350,21 @@ class ReplanService:
             raise BoatError(409, f"re-plan {replan_id}: {record['error']}")
         return record
 
-    async def reject(self, replan_id: str) -> dict[str, Any]:
-        record = self.replans.get(replan_id)
-        if record is None:
-            raise BoatError(404, f"no re-plan {replan_id!r}")
-        if record["state"] != "proposed":
-            raise BoatError(409, f"re-plan {replan_id} is {record['state']}, not proposed")
+    async def reject(self, replan_id: str) -> Replan:
+        record = self._proposed(replan_id)
         record["state"] = "rejected"
         self.state = ReplanState(last_t=self.state.last_t)
         self._save(record)
         return record
 
-    def _instant_passed(self, record: dict[str, Any]) -> bool:
+    def _instant_passed(self, record: Replan) -> bool:
         """Whether the boat's clock is within an upload's time of the swap instant."""
         link = getattr(self.monitor.boat, "link", None)
         up = link.boat_uptime_ms() if link is not None else None
         ahead_ms = MS.to_wire(SWAP_UPLOAD_S * max(1.0, self.monitor.world.sim_speed))
         return up is not None and up + ahead_ms >= record["swap_at_ms"]
 
-    async def _swap(self, record: dict[str, Any]) -> None:
+    async def _swap(self, record: Replan) -> None:
         """Hot-swap the re-plan onto the boat (usv-link 2) and monitor it from then on."""
         m = self.monitor
         swap = getattr(m.boat, "swap_mission", None)
@@ -365,13 +376,13 @@ class ReplanService:
         except BoatError as exc:
             record.update(state="failed", error=str(exc))
             return
-        record.update(state="applied", mission_id=mission.get("id"), error=None,
+        record.update(state="applied", mission_id=mission["id"], error=None,
                       latency_ms=round((m.clock() - self._t_event[record["id"]]) * 1000, 1))
         job = m.plans.get(record["plan_id"])
         if job is not None:
             m.use_plan(job, m.run)
 
-    def _save(self, record: dict[str, Any]) -> None:
+    def _save(self, record: Replan) -> None:
         m = self.monitor
         m.spawn(asyncio.to_thread(m.alerts.save_replan, record))
         m.hub.publish("replan", record)

@@ -29,10 +29,17 @@ import uuid
 from dataclasses import dataclass
 from multiprocessing.connection import Connection
 from multiprocessing.process import BaseProcess
-from typing import Any
 
 from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.planning.limits import PlanTooLarge
+from usvstation.records import (
+    JsonObject,
+    PlanDocument,
+    PlanJob,
+    PlansHealth,
+    PlanSummary,
+    TelemetryRow,
+)
 from usvstation.runtime import tune_allocator
 from usvstation.scenario import Scenario, scenario_at
 from usvstation.services.hub import LiveHub
@@ -59,7 +66,7 @@ class WorkerDied(Exception):
     pass
 
 
-def plan_in_worker(scenario: dict[str, Any], planner: str, seed: int | None) -> dict[str, Any]:
+def plan_in_worker(scenario: JsonObject, planner: str, seed: int | None) -> PlanDocument:
     """Runs in a worker process: validate and plan; NoFeasiblePlan propagates."""
     from usvstation.planning.registry import plan_with
     from usvstation.scenario import parse_scenario
@@ -94,7 +101,7 @@ def die_with_parent(station_pid: int) -> None:
     threading.Thread(target=watch, name="station-watchdog", daemon=True).start()
 
 
-def scenario_from_boat(scenario: Scenario, row: dict[str, Any] | None,
+def scenario_from_boat(scenario: Scenario, row: TelemetryRow | None,
                        run_t0: float | None) -> Scenario:
     """The scenario re-started from the boat's latest telemetry `row` (issue 12, re-plan
     under way).
@@ -111,7 +118,7 @@ def scenario_from_boat(scenario: Scenario, row: dict[str, Any] | None,
                        max(float(t), 0.0))
 
 
-def outdated_by(planned: dict[str, Any], working: Scenario) -> list[str]:
+def outdated_by(planned: JsonObject, working: Scenario) -> list[str]:
     """The top-level fields in which the working scenario differs from the one a plan was
     made for, when the plan was made for the working scenario (same name); else []."""
     now = working.model_dump(mode="json")
@@ -181,7 +188,7 @@ class PlanService:
                  memory_mb: int = 2048, queue_max: int = 32) -> None:
         self.store, self.hub, self.workers = store, hub, workers
         self.timeout_s, self.memory_mb, self.queue_max = timeout_s, memory_mb, queue_max
-        self.jobs: dict[str, dict[str, Any]] = {}
+        self.jobs: dict[str, PlanJob] = {}
         self.started = False
         self.restarts = 0  # workers replaced after a death, timeout or cancel
         self._queue: asyncio.Queue[str] = asyncio.Queue()
@@ -216,13 +223,13 @@ class PlanService:
             self._kill(i)
 
     # --- requests ------------------------------------------------------------------------
-    async def submit(self, scenario: Scenario, planner: str, seed: int | None) -> dict[str, Any]:
+    async def submit(self, scenario: Scenario, planner: str, seed: int | None) -> PlanJob:
         """Queue a job; PlanQueueFull when `queue_max` jobs already wait or run."""
         active = sum(1 for j in self.jobs.values() if j["status"] not in FINAL)
         if active >= self.queue_max:
             raise PlanQueueFull(f"{active} plans already queued or running (--plan-queue "
                                 f"{self.queue_max}); try again later")
-        job = {
+        job: PlanJob = {
             "id": uuid.uuid4().hex[:12], "created_at": utc_now(), "status": "queued",
             "planner": planner, "seed": seed, "scenario": scenario.model_dump(mode="json"),
             "plan": None, "error": None,
@@ -232,7 +239,7 @@ class PlanService:
         self._queue.put_nowait(job["id"])
         return job
 
-    async def cancel(self, job_id: str) -> dict[str, Any] | None:
+    async def cancel(self, job_id: str) -> PlanJob | None:
         """Cancel a queued or running job (its worker is replaced); None if there is no such job."""
         job = self.jobs.get(job_id)
         if job is None:
@@ -246,24 +253,24 @@ class PlanService:
         await self._save(job)
         return job
 
-    def get(self, job_id: str) -> dict[str, Any] | None:
+    def get(self, job_id: str) -> PlanJob | None:
         return self.jobs.get(job_id)
 
-    def summary(self, job: dict[str, Any]) -> dict[str, Any]:
-        return {k: job[k] for k in ("id", "status", "created_at", "planner", "seed", "error")} | {
-            "scenario": job["scenario"]["name"],
-            "fitness": job["plan"]["metrics"]["fitness"] if job.get("plan") else None,
-        }
+    def summary(self, job: PlanJob) -> PlanSummary:
+        plan = job["plan"]
+        return {"id": job["id"], "status": job["status"], "created_at": job["created_at"],
+                "planner": job["planner"], "seed": job["seed"], "error": job["error"],
+                "scenario": str(job["scenario"]["name"]),
+                "fitness": plan["metrics"]["fitness"] if plan else None}
 
-    def health(self) -> dict[str, Any]:
-        counts = {s: 0 for s in ("queued", "running")}
-        for j in self.jobs.values():
-            if j["status"] in counts:
-                counts[j["status"]] += 1
+    def health(self) -> PlansHealth:
+        statuses = [j["status"] for j in self.jobs.values()]
         alive = [w for w in self._slots if w is not None and w.proc.is_alive()]
-        return {**counts, "workers": self.workers, "workers_alive": len(alive),
-                "worker_pids": [w.proc.pid for w in alive], "workers_replaced": self.restarts,
-                "queue_max": self.queue_max, "timeout_s": self.timeout_s}
+        return {"queued": statuses.count("queued"), "running": statuses.count("running"),
+                "workers": self.workers, "workers_alive": len(alive),
+                "worker_pids": [w.proc.pid for w in alive if w.proc.pid is not None],
+                "workers_replaced": self.restarts, "queue_max": self.queue_max,
+                "timeout_s": self.timeout_s}
 
     # --- workers -------------------------------------------------------------------------
     async def _ensure_worker(self, i: int) -> _Worker:
@@ -340,7 +347,7 @@ class PlanService:
                                                       f"{exc}")
                     await self._save(job)
 
-    async def _run(self, i: int, job: dict[str, Any]) -> None:
+    async def _run(self, i: int, job: PlanJob) -> None:
         try:
             w = await self._ensure_worker(i)
         except (OSError, WorkerDied, TimeoutError) as exc:
@@ -385,7 +392,7 @@ class PlanService:
             with contextlib.suppress(OSError, WorkerDied, TimeoutError):
                 await self._ensure_worker(i)
 
-    async def _save(self, job: dict[str, Any], publish: bool = True) -> None:
+    async def _save(self, job: PlanJob, publish: bool = True) -> None:
         """Store the job; a store error is logged, the job's state stays true in memory."""
         try:
             await asyncio.to_thread(self.store.save_plan, job)

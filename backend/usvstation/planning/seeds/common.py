@@ -320,5 +320,6 @@ def min_clearance(pts: np.ndarray, t: np.ndarray, world: World, half_hull: float
     return float(d.min())
 
 
-def _r(value: float) -> float:
-    return round(float(value), 6)
+def _r(value: float | None) -> float | None:
+    """Rounded to the micrometre; None (no obstacle, so no clearance) stays None."""
+    return None if value is None else round(float(value), 6)
