@@ -125,6 +125,10 @@ class Station:
             device = self.sim.device
         await self.boat.start(scenario, device, simulated=self.sim is not None)
         if self.boat.link is not None:
+            # the moving ramp: its pose streamed to the boat, telemetry x, y in its frame
+            self.world.pose_listeners.append(self.boat.link.protocol.set_ramp_pose)
+            if self.boat.handler is not None:
+                self.boat.handler.moving_frame = self.world.current_frame
             self.boat.link.add_listener(self.link_alerts.on_link_event)
             self.boat.link.add_listener(self._publish_heartbeat)
         self._watch = asyncio.get_running_loop().create_task(self._watch_health())

@@ -12,7 +12,8 @@ def test_two_episodes_off_contacts_auto_clear() -> None:
     assert off["contacts"] + off["margin_violations"] > 0 and off["replans"] == 0
     assert auto["contacts"] == 0 and auto["replans"] >= 2
     assert auto["min_true_clearance_m"] > 0 and auto["replan_p99_ms"] > 0
-    assert set(off) | {"replan_p50_ms", "replan_p99_ms"} == set(auto)
+    assert set(off) | {"replan_p50_ms", "replan_p99_ms", "replan_link_p99_ms"} == set(auto)
+    assert 0 < auto["replan_link_p99_ms"] < auto["replan_p99_ms"]
 
 
 def test_bench_live_refuses_zero_episodes(capsys) -> None:

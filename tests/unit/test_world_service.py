@@ -39,3 +39,43 @@ def test_world_events_and_ageing() -> None:
     last = events[-1]
     assert [t["source"] for t in last["targets"]] == ["manual"] * 4  # case1's obstacles stay
     assert last["ramp"]["source"] == "origin" and last["own_ship"] is None
+
+
+def test_ramp_pose_stream_of_the_own_ship_fix() -> None:
+    """The pose handed to the boat link: nothing for a fixed origin, the ramp at the last
+    own-ship fix's instant once the ship reports, the origin at rest once the fix is gone."""
+    import pytest
+
+    from usvstation.world.model import World
+
+    now = [50.0]
+    samples: list = []
+
+    async def main() -> None:
+        svc = WorldService(LiveHub(), [], clock=lambda: now[0])
+        svc.pose_listeners.append(samples.append)
+        await svc.start(load_scenario("case1"))  # origin 30.5135, 114.4182, ramp bearing 90
+        while not samples:
+            await asyncio.sleep(0.05)
+        assert samples[-1] is None and svc.current_frame() is None  # the shore trial
+        # the ship heads 270 (stern ramp +x east), 20 m west (forward) of the ramp end, 1 kn
+        svc.world.update_own(49.0, lat=30.5135, lon=114.4182 - 20.0 / 95_917.0,
+                             heading_deg=270.0, course_deg=270.0, speed=0.5144)
+        n = len(samples)
+        while len(samples) == n:
+            await asyncio.sleep(0.05)
+        s = samples[-1]
+        assert s.t == 49.0 and s.bearing_deg == pytest.approx(90.0)
+        assert s.lat == pytest.approx(30.5135, abs=1e-6)
+        assert s.lon == pytest.approx(114.4182, abs=2e-6)
+        assert (s.vn, s.ve) == pytest.approx((0.0, -0.5144), abs=1e-6)
+        assert svc.current_frame() is not None
+        svc.world = World(anchor=svc.world.anchor)  # the fix is gone (a new sea)
+        n = len(samples)
+        while len(samples) == n:
+            await asyncio.sleep(0.05)
+        s = samples[-1]
+        assert (s.t, s.lat, s.lon, s.vn, s.ve) == (50.0, 30.5135, 114.4182, 0.0, 0.0)
+        await svc.stop()
+
+    asyncio.run(main())

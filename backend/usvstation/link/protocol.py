@@ -12,11 +12,14 @@ Nothing here does I/O or reads a clock: callers pass received bytes, the monoton
 The parts: `LinkMonitor` (fixed heartbeat schedule, link loss, only the paired boat id
 counts), `RttEstimator` (retry timeouts from measured round trips and the frame airtime
 at the configured baud), `MissionUploader` (windowed BEGIN/ITEM/END), `Readback`
-(USV_MISSION_READ), `CommandSender` (COMMAND_INT keyed by session, seq and code).
+(USV_MISSION_READ), `CommandSender` (COMMAND_INT keyed by session, seq and code), and the
+ramp pose stream (USV_RAMP_POSE, `set_ramp_pose`: the latest pose of the moving ramp, sent
+every `ramp_pose_period_s` with its instant mapped to the boat's uptime through TIMESYNC).
 """
 
 from __future__ import annotations
 
+import math
 import random
 from collections import Counter, deque
 from dataclasses import dataclass, field
@@ -48,6 +51,7 @@ class LinkConfig:
     min_timeout_s: float = 0.2  # radio, serial driver and scheduling latency
     max_timeout_s: float = 3.0
     link_id: int = 0  # MAVLink signing link id of this station
+    ramp_pose_period_s: float = 0.25  # USV_RAMP_POSE while a pose is set (at least 2 Hz)
 
     def __post_init__(self) -> None:
         if not 1 <= self.boat_id <= 254 or not 1 <= self.station_id <= 255:
@@ -60,6 +64,9 @@ class LinkConfig:
                              f"{self.heartbeat_period_s}")
         if self.baud <= 0:
             raise ValueError(f"baud must be positive, got {self.baud}")
+        if not 0 < self.ramp_pose_period_s <= 0.5:
+            raise ValueError(f"ramp_pose_period_s must be in (0, 0.5], got "
+                             f"{self.ramp_pose_period_s}")
 
     def airtime(self, nbytes: int) -> float:
         """Seconds to send nbytes at the configured baud (8N1: 10 bits a byte)."""
@@ -117,6 +124,28 @@ class Telemetry:
     cross_track_m: float = 0.0
     waypoint_index: int = 0
     state: str = "IDLE"
+
+
+@dataclass(frozen=True)
+class RampPoseSample:
+    """The moving ramp's pose at station time `t` (the instant of the own-ship fix it
+    comes from): WGS-84 degrees, the compass bearing of the ramp frame's +x, the ramp
+    end's velocity over ground and the ship's yaw rate (rad/s, clockwise positive)."""
+
+    t: float
+    lat: float
+    lon: float
+    bearing_deg: float
+    vn: float = 0.0
+    ve: float = 0.0
+    yaw_rate: float = 0.0
+
+    def __post_init__(self) -> None:
+        for name in ("t", "lat", "lon", "bearing_deg", "vn", "ve", "yaw_rate"):
+            if not math.isfinite(getattr(self, name)):
+                raise ValueError(f"ramp pose: {name} must be finite, got {getattr(self, name)}")
+        if not (-90.0 <= self.lat <= 90.0 and -180.0 <= self.lon <= 180.0):
+            raise ValueError(f"ramp pose: lat, lon out of range: {self.lat}, {self.lon}")
 
 
 # ----------------------------------------------------------------------------- events
@@ -630,6 +659,12 @@ class StationProtocol:
         self.next_timesync = self.now
         self._timesync_sent: dict[int, float] = {}
         self.clock_offset_s: float | None = None  # boat uptime - station now
+        # TIMESYNC samples (station instant, boat uptime s): offset and rate of the boat
+        # clock (a simulated boat's runs --sim-speed times faster)
+        self._sync: deque[tuple[float, float]] = deque(maxlen=16)
+        self.ramp_pose: RampPoseSample | None = None
+        self.next_ramp_pose = self.now
+        self.ramp_poses_sent = 0
         self._out = bytearray()
         self.bytes_sent = self.bytes_received = 0
         self.tx_free_at = self.now  # when our side of the line (at the baud) is idle
@@ -646,8 +681,22 @@ class StationProtocol:
     def _stamp(self, now: float) -> int:
         return wire.signing_time(self.unix_time + (now - self._t0))
 
+    @property
+    def clock_rate(self) -> float:
+        """Boat seconds per station second from the TIMESYNC samples of the last 15 s (1.0
+        until they span 2 s): a real boat's crystal is within 1e-4 of 1."""
+        if len(self._sync) < 2 or self._sync[-1][0] - self._sync[0][0] < 2.0:
+            return 1.0
+        (s0, b0), (s1, b1) = self._sync[0], self._sync[-1]
+        return min(max((b1 - b0) / (s1 - s0), 1e-3), 1e3)
+
     def boat_uptime_ms(self, now: float) -> int | None:
-        """The boat's uptime now, from TIMESYNC (else the last USV_MISSION_STATE)."""
+        """The boat's uptime at station time `now` (past or future), from TIMESYNC: the
+        latest sample carried at the measured clock rate (else the last
+        USV_MISSION_STATE)."""
+        if self._sync:
+            s, b = self._sync[-1]
+            return int((b + self.clock_rate * (now - s)) * 1000)
         if self.clock_offset_s is not None:
             return int((now + self.clock_offset_s) * 1000)
         if self.report is not None:
@@ -688,6 +737,7 @@ class StationProtocol:
             if self.report is not None and rep.boot_id != self.report.boot_id:
                 events.append(BoatRebooted(self.report.boot_id, rep.boot_id))
                 self.clock_offset_s = None
+                self._sync.clear()
                 self._reports.clear()
             self.report, self.report_at = rep, now
             self._reports.append(rep)
@@ -714,6 +764,7 @@ class StationProtocol:
                 rtt = now - sent
                 self.rtt.sample(rtt)
                 self.clock_offset_s = msg.tc1 / 1e9 + rtt / 2 - now
+                self._sync.append((sent + rtt / 2, msg.tc1 / 1e9))
         return events
 
     def _mission_ack(self, ack: Any, now: float) -> list[Event]:
@@ -780,6 +831,9 @@ class StationProtocol:
             self._timesync_sent = {k: v for k, v in self._timesync_sent.items()
                                    if now - v < 5.0}
             self._timesync_sent[ts1] = self._send(self.codec.mav.timesync_encode(0, ts1), now)
+        if self.ramp_pose is not None and now >= self.next_ramp_pose:
+            self.next_ramp_pose = now + self.config.ramp_pose_period_s
+            self._send_ramp_pose(now)
         if self.upload is not None:
             out, ev = self.upload.poll(now)
             self._queue_upload(out, now)
@@ -840,6 +894,25 @@ class StationProtocol:
             self.config.boat_id, wire.BOAT_COMPONENT, heading_cdeg % 36000,
             max(0, min(0xFFFF, speed_cms)), max(1, min(0xFFFF, valid_ms))), self.now)
 
+    def set_ramp_pose(self, pose: RampPoseSample | None) -> None:
+        """The latest pose of the moving ramp (None: the ramp is the fixed scenario origin,
+        nothing is streamed). `poll` sends it every `ramp_pose_period_s` while the link is
+        up and the boat's clock is known; each frame carries the pose's own instant
+        (`pose.t` mapped to the boat's uptime), so the boat extrapolates an old pose by
+        its true age."""
+        self.ramp_pose = pose
+
+    def _send_ramp_pose(self, now: float) -> None:
+        p = self.ramp_pose
+        up = self.boat_uptime_ms(p.t) if p is not None else None
+        if p is None or up is None or up < 0 or not self.monitor.link_up:
+            return
+        self._send(self.codec.mav.usv_ramp_pose_encode(
+            self.config.boat_id, wire.BOAT_COMPONENT, up & 0xFFFFFFFF, E7.to_wire(p.lat),
+            E7.to_wire(p.lon), CDEG.to_wire(p.bearing_deg % 360.0), p.vn, p.ve, p.yaw_rate),
+            now)
+        self.ramp_poses_sent += 1
+
     # ---- output
     def _send(self, msg: Any, now: float) -> float:
         """Queue one frame; returns when it will have left at the configured baud."""
@@ -889,6 +962,8 @@ class StationProtocol:
 
     def next_deadline(self) -> float:
         d = min(self.monitor.next_deadline(), self.commands.next_deadline(), self.next_timesync)
+        if self.ramp_pose is not None:
+            d = min(d, self.next_ramp_pose)
         if self.upload is not None and not self.upload.done:
             d = min(d, self.upload.next_deadline())
         if self.readback is not None and self.readback.result is None:

@@ -36,6 +36,8 @@ class LinkHandler:
         self.link, self.device, self.store, self.hub = link, device, store, hub
         self.on_report, self.on_reboot = on_report, on_reboot
         self.frame: RampFrame | None = None  # ramp frame for x, y of telemetry
+        # the moving ramp's frame of now (WorldService.current_frame), when there is one
+        self.moving_frame: Callable[[], RampFrame | None] | None = None
         self.run: int | None = None
         self.run_t0: float | None = None
         self.telemetry: TelemetryRow | None = None
@@ -104,7 +106,8 @@ class LinkHandler:
 
     def _ingest(self, t: Telemetry) -> None:
         self.frames += 1
-        row = telemetry_row(t, self.frame, self.run)
+        moving = self.moving_frame() if self.moving_frame is not None else None
+        row = telemetry_row(t, moving or self.frame, self.run)
         self.store.writer.put(row)
         self.telemetry, self.telemetry_at = row, time.monotonic()
         if self.run is not None and self.run_t0 is None:

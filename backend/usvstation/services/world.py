@@ -4,6 +4,12 @@ Lines from every `--nmea` source are decoded on the event loop (a sentence takes
 microseconds) and merged into the pure world model (world/model.py); at most
 `PUBLISH_HZ` times a second a changed world goes out on the websocket as
 {"type": "world", "data": <the /api/world body>}. Silent tracks age out.
+
+The ramp pose goes to `pose_listeners` `RAMP_POSE_HZ` times a second (the boat link's
+USV_RAMP_POSE stream, link/protocol.py `set_ramp_pose`): the pose of the latest own-ship
+fix, at that fix's instant; None while the ramp is the fixed scenario origin and nothing
+was streamed yet (the shore trial: nothing to stream). Once streamed, a world without an
+own-ship fix streams the fixed origin at rest, so the boat never keeps a stale moving frame.
 """
 
 from __future__ import annotations
@@ -16,6 +22,7 @@ from collections.abc import Callable
 from typing import Any
 
 from usvstation.geo import RampFrame
+from usvstation.link.protocol import RampPoseSample
 from usvstation.scenario import Scenario
 from usvstation.scenario.ships import LeverArm
 from usvstation.services.hub import LiveHub
@@ -27,6 +34,7 @@ from usvstation.world.model import World, enu_to_compass
 
 log = logging.getLogger(__name__)
 PUBLISH_HZ = 2.0
+RAMP_POSE_HZ = 4.0  # at least twice a second (issue 15); the link sends at its own period
 
 
 class WorldService:
@@ -47,6 +55,8 @@ class WorldService:
         self._transports: list[asyncio.DatagramTransport] = []
         self._tasks: set[asyncio.Task] = set()
         self.listeners: list[Callable[[World, float], None]] = []
+        self.pose_listeners: list[Callable[[RampPoseSample | None], None]] = []
+        self._pose_streamed = False
 
     # --- lifecycle -------------------------------------------------------------------------
     async def start(self, scenario: Scenario | None) -> None:
@@ -55,6 +65,7 @@ class WorldService:
         if scenario is not None:
             await self.use_scenario(scenario)
         self._spawn(self._ticker())
+        self._spawn(self._pose_ticker())
 
     async def use_scenario(self, scenario: Scenario) -> None:
         """A new working scenario; with the simulated boat, its sea (if any) starts afresh."""
@@ -141,7 +152,40 @@ class WorldService:
                     except Exception:  # a listener's fault never stops the world
                         log.exception("world listener failed")
 
+    async def _pose_ticker(self) -> None:
+        while True:
+            await asyncio.sleep(1.0 / RAMP_POSE_HZ)
+            sample = self.ramp_sample(self.clock())
+            for listener in self.pose_listeners:
+                try:
+                    listener(sample)
+                except Exception:  # a listener's fault never stops the world
+                    log.exception("ramp pose listener failed")
+
     # --- output ----------------------------------------------------------------------------
+    def ramp_sample(self, t: float) -> RampPoseSample | None:
+        """The pose to stream: the ramp at the last own-ship fix (that fix's instant: the
+        boat extrapolates it in its own time), the fixed origin at rest at t once a pose
+        was streamed and the fix is gone, else None (nothing to stream)."""
+        own = self.world.own
+        if own.has_fix and own.t_fix is not None:
+            pose = self.world.ramp(own.t_fix)
+            t = own.t_fix
+        elif self._pose_streamed:
+            pose = self.world.ramp(t)
+        else:
+            return None
+        if pose is None:
+            return None
+        self._pose_streamed = True
+        return RampPoseSample(t, pose.lat, pose.lon, pose.ramp_bearing_deg, pose.vn, pose.ve,
+                              0.0)
+
+    def current_frame(self) -> RampFrame | None:
+        """The ramp frame of now when the ramp comes from the own ship, else None."""
+        pose = self.world.ramp(self.clock())
+        return pose.frame if pose is not None and pose.moving else None
+
     def snapshot(self, t: float | None = None) -> dict[str, Any]:
         """The `GET /api/world` body, everything predicted to station time t (default now)."""
         t = self.clock() if t is None else t

@@ -9,8 +9,21 @@ running mission at a boat-clock instant, fails safe 3 s after its station went s
 and reports what it holds (USV_MISSION_STATE) after every HEARTBEAT and on every change.
 
 It drives any `Vehicle` (sim/vehicle.py) through set_mission/start/hold/resume/abort/
-set_guidance/clear_guidance/step/state only. Time comes in as `now` (link clock, s);
-the boat clock (uptime) runs `sim_speed` times faster.
+set_guidance/clear_guidance/step/state only, and `set_frame` where the vehicle has it
+(sim/dynamic.py, and KinematicVehicle). Time comes in as `now` (link clock, s); the boat
+clock (uptime) runs `sim_speed` times faster.
+
+The moving ramp (USV_RAMP_POSE, protocol/README.md "The ramp pose stream"): the mission's
+waypoints are ramp-frame points (placed through the scenario origin, the ramp's pose at
+the sea's start); each pose, labelled with the boat uptime it refers to, becomes the
+vehicle's `RampMotion` (sim/frame.py), extrapolated with its velocity and yaw rate to
+every control step. Without a USV_RAMP_POSE frame for `ramp_timeout_s` (link time; a
+repeated pose counts, the station's own-ship age is its own alert) the pose is stale:
+the frame is frozen where it was extrapolated to, a RUNNING boat goes to HOLD over ground
+(a ship making way opens the distance; a dead-reckoned ramp that in truth slowed would
+not), and a STATUSTEXT says so; the next pose moves the frame again (the boat stays in
+HOLD until the operator resumes). A boat that never received a pose tracks in the fixed
+frame of the scenario origin (the shore trial).
 """
 
 from __future__ import annotations
@@ -34,6 +47,7 @@ from usvstation.link.mission import (
     item_problem,
     sequence_problem,
 )
+from usvstation.sim.frame import RampMotion
 from usvstation.sim.sensors import Battery, GpsNoise
 from usvstation.sim.vehicle import Vehicle, Waypoint
 
@@ -58,6 +72,7 @@ class BoatConfig:
     duplicate_expiry_s: float = 5.0  # duplicate memory entry lifetime
     baud: int | None = None  # UART model: telemetry only while the line is idle
     link_id: int = 0
+    ramp_timeout_s: float = 2.0  # link time without USV_RAMP_POSE: the pose is stale
 
     def __post_init__(self) -> None:
         if not 0 < self.telemetry_hz <= 50:
@@ -68,6 +83,8 @@ class BoatConfig:
             raise ValueError(f"sim_speed must be positive, got {self.sim_speed}")
         if self.boat_id == self.station_id:
             raise ValueError(f"boat_id and station_id are both {self.boat_id}")
+        if self.ramp_timeout_s <= 0:
+            raise ValueError(f"ramp_timeout_s must be positive, got {self.ramp_timeout_s}")
 
 
 @dataclass
@@ -154,6 +171,10 @@ class BoatProtocol:
         self._urgent = bytearray()
         self._telemetry: deque[Any] = deque()  # messages, signed when they go out
         self._line_free_at = now
+        self.ramp = RampMotion()  # the ramp frame in the vehicle's world frame, boat time
+        self.ramp_rx: float | None = None  # link time of the latest USV_RAMP_POSE
+        self.ramp_stale = False
+        self.ramp_poses = 0
 
     # ---- I/O boundary
     @property
@@ -343,6 +364,10 @@ class BoatProtocol:
 
     def _distance_to(self, it: MissionItem) -> float:
         s = self.vehicle.state
+        if not self.ramp.identity:  # both in the ramp frame
+            wx, wy = self.frame.to_ramp(E7.from_wire(it.lat), E7.from_wire(it.lon))
+            bx, by = self.ramp.at(self.boat_time).to_ramp(s.x, s.y)
+            return math.hypot(float(wx) - bx, float(wy) - by)
         lat, lon = self.frame.to_geodetic(s.x, s.y)
         return distance_m(E7.to_wire(float(lat)), E7.to_wire(float(lon)), it.lat, it.lon)
 
@@ -473,8 +498,49 @@ class BoatProtocol:
             return
         compass = CDEG.from_wire(g.heading_cdeg)
         heading = math.radians(float(self.frame.compass_to_heading_deg(compass)))
+        heading -= self.ramp.at(self.boat_time).theta  # the vehicle steers in the ramp frame
         self.vehicle.set_guidance(heading, CM.from_wire(g.speed_cms))
         self.guided_until = now + MS.from_wire(g.valid_ms)
+
+    def _on_ramp_pose(self, p: Any, now: float) -> None:
+        """USV_RAMP_POSE: every one keeps the stream fresh; the newest pose (by its boat
+        instant) moves the vehicle's frame."""
+        t = MS.from_wire(p.time_boot_ms)
+        first, stale = self.ramp_rx is None, self.ramp_stale
+        self.ramp_rx = now
+        if not (first or stale) and t <= self.ramp.t0:
+            return  # not newer than the pose in use (repeated, or reordered)
+        x, y = self.frame.to_ramp(E7.from_wire(p.lat), E7.from_wire(p.lon))
+        theta = math.radians(float(self.frame.compass_to_heading_deg(
+            CDEG.from_wire(p.bearing_cdeg))))
+        vx, vy = self.frame.vector_to_ramp(p.ve, p.vn)
+        self.ramp = RampMotion(float(x), float(y), theta, float(vx), float(vy), -p.yaw_rate, t)
+        self.ramp_stale = False
+        self.ramp_poses += 1
+        self._set_frame(reanchor=first or stale)
+        if stale:
+            self._text(mav.MAV_SEVERITY_INFO, "ramp pose back" + (
+                ": RESUME to go on" if self.state == S_HOLD else ""), now)
+
+    def _set_frame(self, reanchor: bool) -> None:
+        set_frame = getattr(self.vehicle, "set_frame", None)
+        if set_frame is not None:
+            set_frame(self.ramp, reanchor=reanchor)
+
+    def _ramp_lost(self, now: float) -> None:
+        """No pose for ramp_timeout_s: freeze the frame; a running boat holds over ground."""
+        self.ramp_stale = True
+        self.ramp = self.ramp.frozen(self.boat_time)
+        self._set_frame(reanchor=True)
+        if self.state == S_RUNNING:
+            self.vehicle.hold()
+            self._clear_guidance()
+            self.state = S_HOLD
+            self._text(mav.MAV_SEVERITY_WARNING, f"ramp pose stale "
+                       f"{self.cfg.ramp_timeout_s:g} s: holding", now)
+            self._report(now)
+        else:
+            self._text(mav.MAV_SEVERITY_WARNING, "ramp pose stale: frame frozen", now)
 
     def _clear_guidance(self) -> None:
         if self.guided_until is not None:
@@ -532,6 +598,9 @@ class BoatProtocol:
             self.state = S_DONE
             self._text(mav.MAV_SEVERITY_INFO, f"mission {self.active.mission_id} complete", now)
             self._report(now)
+        if self.ramp_rx is not None and not self.ramp_stale and \
+                now - self.ramp_rx > self.cfg.ramp_timeout_s:
+            self._ramp_lost(now)
         if self.linked and now - self.last_rx > self.cfg.failsafe_timeout_s:
             self._failsafe(now)
         st = self.staging
@@ -590,6 +659,8 @@ class BoatProtocol:
         d = self.last_now + max(0.0, boat_next - self.boat_time) / speed
         if self.linked:
             d = min(d, self.last_rx + self.cfg.failsafe_timeout_s + 1e-3)
+        if self.ramp_rx is not None and not self.ramp_stale:
+            d = min(d, self.ramp_rx + self.cfg.ramp_timeout_s + 1e-3)
         if self.guided_until is not None:
             d = min(d, self.guided_until)
         if self._telemetry and self.cfg.baud:
@@ -646,10 +717,12 @@ _FROM_STATION = {
     "USV_MISSION_END": BoatProtocol._on_end,
     "USV_MISSION_READ": BoatProtocol._on_read,
     "USV_GUIDANCE": BoatProtocol._on_guidance,
+    "USV_RAMP_POSE": BoatProtocol._on_ramp_pose,
 }
 
 _COMMANDING = frozenset(("COMMAND_INT", "COMMAND_LONG", "USV_MISSION_BEGIN", "USV_MISSION_ITEM",
-                         "USV_MISSION_END", "USV_MISSION_READ", "USV_GUIDANCE"))
+                         "USV_MISSION_END", "USV_MISSION_READ", "USV_GUIDANCE",
+                         "USV_RAMP_POSE"))
 
 
 def _next_on_grid(scheduled: float, now: float, period: float) -> float:

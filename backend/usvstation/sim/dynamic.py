@@ -17,14 +17,24 @@ over ground, weathervaning into the estimated current); when the current
 is beyond what the boat can hold, `notice` says so. The mission is complete
 when the boat passes the last waypoint (for a recovery: reaches the ramp
 end); it then stops its propellers and, on a recovery ramp, is held there
-(the model stops moving; boat time goes on).
+(the model stops moving; boat time goes on; on a moving ramp it goes where
+the ramp goes).
+
+A moving mother ship (`set_frame`, sim/frame.py): the vessel's physics stays
+in the earth-fixed world frame (the water does not move with the ship); its
+waypoints, guidance, station keeping and drift observer work in the
+ship-fixed ramp frame, every fix mapped through the ramp's pose extrapolated
+to that control step. The observer then learns the apparent current (the
+real one less the ship's velocity), the planner's view of the same sea.
+`state` stays in the world frame (what GNSS sees); its cross-track error is
+the ramp frame's.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from usvstation.control.select import CONTROLLERS, make_controller
 from usvstation.dynamics import Environment, ThrustCommand, Vessel, VesselState, otter
@@ -34,6 +44,7 @@ from usvstation.guidance.compensation import EstimatedDrift
 from usvstation.guidance.observer import DriftObserver, Measurement
 from usvstation.guidance.select import GUIDANCE_METHODS, make_guidance
 from usvstation.guidance.station import StationKeeper
+from usvstation.sim.frame import RampMotion
 from usvstation.sim.vehicle import VehicleState, Waypoint, checked_mission, leg_cross_track
 
 CONTROL_PERIOD = 0.05  # s, autopilot and model
@@ -57,7 +68,10 @@ class DynamicVehicle:
     def __init__(self, x: float, y: float, heading: float, *, speed: float = 0.0,
                  params: VesselParams | None = None, env: Environment | None = None,
                  accel: float = 0.5, guidance: str = "avlos_comp",
-                 controller: str = "pid") -> None:
+                 controller: str = "pid", frame: RampMotion | None = None) -> None:
+        """At (x, y) heading `heading` making `speed` along it; with `frame` these are in
+        the moving ramp frame (the start relative to the ship) and the vehicle tracks in it
+        from the start."""
         if guidance not in GUIDANCE_METHODS:
             raise ValueError(f"guidance: unknown method {guidance!r}; "
                              f"available: {', '.join(GUIDANCE_METHODS)}")
@@ -69,7 +83,17 @@ class DynamicVehicle:
         self.accel = accel
         self.guidance_method = guidance
         self.controller = controller
-        self.vessel = Vessel(self.params, VesselState(x, y, heading, speed))
+        motion = frame or RampMotion()
+        if motion.identity:
+            start = VesselState(x, y, heading, speed)
+        else:  # the ramp-frame start over ground: turned, plus the ramp point's velocity
+            wx, wy = motion.to_world(x, y)
+            psi = heading + motion.theta
+            px, py = motion.point_velocity(wx, wy)
+            gx, gy = speed * math.cos(psi) + px, speed * math.sin(psi) + py
+            c, s = math.cos(psi), math.sin(psi)
+            start = VesselState(wx, wy, psi, gx * c + gy * s, -gx * s + gy * c)
+        self.vessel = Vessel(self.params, start)
         if speed > 0.0:
             trim = 0.5 * self.params.surge_drag(speed)
             self.vessel.set_initial_thrust(ThrustCommand(trim, trim))
@@ -77,7 +101,7 @@ class DynamicVehicle:
         self.observer = DriftObserver(self.params)
         self.drift = EstimatedDrift(self.observer)
         self.keeper = StationKeeper(self.drift)
-        self.keeper.hold_at(x, y)
+        self.keeper.hold_at(x, y)  # ramp frame
         self._wps: list[Waypoint] = []
         self._guide = None
         self._phase = "idle"  # idle | track | hold | guided | done | aborted
@@ -90,7 +114,10 @@ class DynamicVehicle:
         self._segment = 0
         self._complete = False
         self._idle_time = 0.0  # boat time spent held on the ramp (the model is frozen)
-        self._meas = Measurement.of(self.vessel.state)
+        self._clock = 0.0  # the vehicle's time: every dt stepped (BoatProtocol's boat time)
+        self._motion = motion  # the ramp frame in the world frame (identity: fixed)
+        self._on_ramp: tuple[float, float, float] | None = None  # ramp-frame x, y, psi
+        self._meas = self._measure(0.0)
         self.observer.start(self._meas, self.vessel.thrust)
         self._state = self._report()
 
@@ -152,13 +179,38 @@ class DynamicVehicle:
         else:
             self._keep_station()
 
+    @property
+    def frame(self) -> RampMotion:
+        return self._motion
+
+    def set_frame(self, motion: RampMotion, *, reanchor: bool = False) -> None:
+        """The ramp frame's motion in the world frame (times on the vehicle's clock, the
+        sum of the steps' dt). Waypoints and hold points are ramp-frame points from now
+        on; `reanchor` moves a hold point to where the boat is in the new frame (after a
+        jump of the frame, e.g. frozen while the pose was stale, or back)."""
+        self._motion = motion
+        self._meas = self._measure(self._clock - self._pending)
+        if reanchor and self._phase in ("hold", "idle"):
+            self.keeper.hold_at(self._meas.x, self._meas.y)
+        self._state = self._report()
+
+    def in_ramp(self) -> VehicleState:
+        """`state` as seen in the ramp frame of now (position, heading, velocity relative
+        to the ramp)."""
+        s = self._state
+        f = self._motion.at(self._clock)
+        m = f.measure(Measurement(s.x, s.y, s.heading, s.speed, s.course, s.yaw_rate, s.t))
+        return replace(s, x=m.x, y=m.y, heading=m.psi, speed=m.sog, course=m.cog,
+                       yaw_rate=m.r)
+
     def step(self, dt: float) -> None:
         if dt <= 0.0:
             return
         self._pending += dt
+        self._clock += dt
         while self._pending >= CONTROL_PERIOD:
             self._pending -= CONTROL_PERIOD
-            self._control_step()
+            self._control_step(self._clock - self._pending - CONTROL_PERIOD)
         self._state = self._report()
 
     # --- internals ----------------------------------------------------------------------
@@ -170,12 +222,16 @@ class DynamicVehicle:
         if self._complete:
             self._phase = "done"
 
-    def _control_step(self) -> None:
+    def _measure(self, t: float) -> Measurement:
+        """The vessel's fix in the ramp frame as the frame is at vehicle time t."""
+        return self._motion.at(t).measure(Measurement.of(self.vessel.state))
+
+    def _control_step(self, t: float) -> None:
         if self._phase == "done":  # recovered: the ramp holds the boat
             self._thrust = ThrustCommand(0.0, 0.0)
             self._idle_time += CONTROL_PERIOD
             return
-        s = self._meas = Measurement.of(self.vessel.state)
+        s = self._meas = self._measure(t)
         self.observer.update(s, (self._thrust.left, self._thrust.right), CONTROL_PERIOD)
         command = self._steer(s)
         if command is None:
@@ -186,9 +242,11 @@ class DynamicVehicle:
         self.vessel.step(self._thrust, self.env, CONTROL_PERIOD)
         if self._phase == "track":
             self._tau += CONTROL_PERIOD
-            if self._passed_end():
+            after = self._measure(t + CONTROL_PERIOD)
+            if self._passed_end(after):
                 self._complete = True
                 self._phase = "done"
+                self._on_ramp = (after.x, after.y, after.psi)
 
     def _steer(self, s: Measurement) -> _Command | None:
         if self._phase == "track" and self._guide is not None:
@@ -205,27 +263,32 @@ class DynamicVehicle:
             return None if c.idle else _Command(c.heading, c.speed, c.water_speed)
         return None  # done (on the ramp) or aborted: propellers stopped
 
-    def _passed_end(self) -> bool:
+    def _passed_end(self, s: Measurement) -> bool:
         """True once the boat is past the line through the last waypoint, across the last leg."""
         a, b = self._wps[-2], self._wps[-1]
-        s = self.vessel.state
         lx, ly = b.x - a.x, b.y - a.y
         return (s.x - b.x) * lx + (s.y - b.y) * ly >= 0.0
 
     def _report(self) -> VehicleState:
         s = self.vessel.state
+        x, y, psi, r = s.x, s.y, s.psi, s.r
         vx, vy = s.velocity
-        speed = math.hypot(vx, vy)
         full = self.params.thrusters.thrust_max
         index = min(self._segment + 1, max(len(self._wps) - 1, 0))
-        if self._phase == "done":
-            vx = vy = speed = 0.0
+        f = self._motion.at(self._clock)
+        if self._phase == "done":  # on the ramp: carried with it (still on a fixed one)
+            rx, ry, rpsi = self._on_ramp if self._on_ramp is not None else (
+                *f.to_ramp(x, y), psi - f.theta)
+            x, y = f.to_world(rx, ry)
+            psi, r = rpsi + f.theta, f.omega
+            vx, vy = f.point_velocity(x, y)
+        speed = math.hypot(vx, vy)
+        rx, ry = f.to_ramp(x, y)
         return VehicleState(
-            t=s.t + self._idle_time, x=s.x, y=s.y, heading=s.psi, speed=speed,
-            course=math.atan2(vy, vx) if speed > 1e-6 else s.psi,
-            yaw_rate=0.0 if self._phase == "done" else s.r,
+            t=s.t + self._idle_time, x=x, y=y, heading=psi, speed=speed,
+            course=math.atan2(vy, vx) if speed > 1e-6 else psi, yaw_rate=r,
             thrust_left=max(-1.0, min(1.0, self._thrust.left / full)),
             thrust_right=max(-1.0, min(1.0, self._thrust.right / full)),
-            waypoint_index=index, cross_track_error=leg_cross_track(self._wps, s.x, s.y, index),
+            waypoint_index=index, cross_track_error=leg_cross_track(self._wps, rx, ry, index),
             mission_complete=self._complete,
         )

@@ -17,6 +17,7 @@ from typing import Protocol, runtime_checkable
 import numpy as np
 
 from usvstation.geometry import angle_diff, cross_track_error, position_at
+from usvstation.sim.frame import RampMotion
 
 
 @dataclass(frozen=True)
@@ -106,6 +107,10 @@ class KinematicVehicle:
     Off the track (before start, after guidance) it first goes straight back to the
     mission's reference point at `rejoin_speed`, then follows the mission clock again.
     Thrust is a plausible derived figure (speed share plus a turn differential), not a model.
+
+    With a moving ramp frame (`set_frame`, sim/frame.py) it moves in that frame exactly as
+    it would in a fixed one, and `state` is mapped into the world frame (velocity over
+    ground: its own relative to the ramp plus the ramp's).
     """
 
     def __init__(self, x: float = 0.0, y: float = 0.0, heading: float = 0.0, *,
@@ -117,10 +122,37 @@ class KinematicVehicle:
         self._tau = 0.0  # mission clock, s
         self._phase = "idle"  # idle | track | rejoin | hold | guided | done | stopped
         self._guidance = (0.0, 0.0)
+        self._clock = 0.0  # every dt stepped (BoatProtocol's boat time)
+        self._motion = RampMotion()
 
     @property
     def state(self) -> VehicleState:
-        return self._state
+        """The state in the world frame (`_state` is in the ramp frame)."""
+        f = self._motion.at(self._clock)
+        s = self._state
+        if f.identity:
+            return s
+        x, y = f.to_world(s.x, s.y)
+        c, sn = math.cos(f.theta), math.sin(f.theta)
+        rvx, rvy = s.speed * math.cos(s.course), s.speed * math.sin(s.course)
+        px, py = f.point_velocity(x, y)
+        gx, gy = c * rvx - sn * rvy + px, sn * rvx + c * rvy + py
+        speed = math.hypot(gx, gy)
+        heading = s.heading + f.theta
+        return replace(s, x=x, y=y, heading=heading, speed=speed,
+                       course=math.atan2(gy, gx) if speed > 1e-6 else heading,
+                       yaw_rate=s.yaw_rate + f.omega)
+
+    def set_frame(self, motion: RampMotion, *, reanchor: bool = False) -> None:
+        """The ramp frame's motion in the world frame (times on the vehicle's clock). The
+        vehicle keeps its ramp-frame position; with `reanchor` (the frame jumped) it keeps
+        its world position instead."""
+        if reanchor:
+            w = self.state
+            x, y = motion.at(self._clock).to_ramp(w.x, w.y)
+            self._state = replace(self._state, x=x, y=y,
+                                  heading=w.heading - motion.at(self._clock).theta)
+        self._motion = motion
 
     @property
     def phase(self) -> str:
@@ -177,6 +209,7 @@ class KinematicVehicle:
     def step(self, dt: float) -> None:
         if dt <= 0:
             return
+        self._clock += dt
         s = self._state
         x, y, heading, speed = s.x, s.y, s.heading, 0.0
         index, complete = s.waypoint_index, s.mission_complete
