@@ -23,6 +23,7 @@ from typing import Any
 
 from usvstation.geo import RampFrame
 from usvstation.link.protocol import RampPoseSample
+from usvstation.records import InputSource, WorldSnapshot
 from usvstation.scenario import Scenario
 from usvstation.scenario.ships import LeverArm
 from usvstation.services.hub import LiveHub
@@ -48,7 +49,7 @@ class WorldService:
         self._sea_stop: asyncio.Event | None = None
         self._sea_port: int | None = None
         self.sources: list[Source] = [parse_source(url) for url in sources]
-        self.source_state: dict[str, dict[str, Any]] = {}
+        self.source_state: dict[str, InputSource] = {}
         self.world = World()
         self.decoder = SentenceDecoder()
         self._published = -1
@@ -186,7 +187,7 @@ class WorldService:
         pose = self.world.ramp(self.clock())
         return pose.frame if pose is not None and pose.moving else None
 
-    def snapshot(self, t: float | None = None) -> dict[str, Any]:
+    def snapshot(self, t: float | None = None) -> WorldSnapshot:
         """The `GET /api/world` body, everything predicted to station time t (default now)."""
         t = self.clock() if t is None else t
         own = self.world.own
