@@ -65,3 +65,13 @@ def test_world_scenario_takes_the_targets_and_the_apparent_current() -> None:
     assert (sc.environment.current_speed, sc.environment.current_dir_deg) == pytest.approx(
         (1.0, 270.0))
     assert sc.start == base.start and sc.origin == base.origin
+    # a re-plan of that plan for the same ship adds nothing: the water's current is kept
+    again, _ = world_scenario(sc, [far], frame_velocity=(0.0, 1.0))
+    assert (again.environment.current_speed, again.environment.current_dir_deg) == \
+        pytest.approx((1.0, 270.0))
+    # the ship slowed to 0.5 m/s: half the apparent current
+    slower, _ = world_scenario(sc, [far], frame_velocity=(0.0, 0.5))
+    assert slower.environment.current_speed == pytest.approx(0.5)
+    from usvstation.dynamics import Environment
+    water = Environment.from_scenario(sc.environment)  # the simulated sea: still water
+    assert water.current == pytest.approx((0.0, 0.0), abs=1e-12)

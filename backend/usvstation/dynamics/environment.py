@@ -169,9 +169,13 @@ class Environment:
         wind = None
         if environment.wind_speed > 0.0:
             wind = Wind(environment.wind_speed, math.radians(environment.wind_dir_deg))
-        return cls.with_current(
-            environment.current_speed, math.radians(environment.current_dir_deg), waves, wind,
-        )
+        # the water's own current: an apparent current planned for a moving ramp frame has
+        # that frame's velocity folded in (scenario Environment.frame_vx, frame_vy)
+        c = math.radians(environment.current_dir_deg)
+        cx = environment.current_speed * math.cos(c) + getattr(environment, "frame_vx", 0.0)
+        cy = environment.current_speed * math.sin(c) + getattr(environment, "frame_vy", 0.0)
+        speed = math.hypot(cx, cy)
+        return cls.with_current(speed, math.atan2(cy, cx) if speed > 0.0 else c, waves, wind)
 
     @property
     def calm(self) -> bool:

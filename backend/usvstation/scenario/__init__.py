@@ -103,6 +103,11 @@ class Environment(BaseModel):
     current_dir_deg: float = Field(0.0, ge=-360.0, le=360.0)
     wind_speed: Speed = 0.0
     wind_dir_deg: float = Field(0.0, ge=-360.0, le=360.0)
+    # Set when the station plans for a moving ramp: the ramp frame's own velocity (ramp
+    # axes) already folded into current_* as an apparent current, so the water's current
+    # is current + frame velocity and folding the frame in again changes nothing.
+    frame_vx: Velocity = 0.0
+    frame_vy: Velocity = 0.0
 
 
 class Scenario(BaseModel):

@@ -94,13 +94,15 @@ def replan_scenario(base: Scenario, a: Assessment, targets: list[TargetState],
 
 def apparent_environment(env: Environment, frame_velocity: tuple[float, float]
                          ) -> Environment:
-    """The current seen in a ramp frame moving at `frame_velocity` (ramp axes, m/s)."""
+    """The current seen in a ramp frame moving at `frame_velocity` (ramp axes, m/s): the
+    water's current (`env`'s, plus any frame velocity already folded into it) minus the
+    frame's. Folding the same frame in twice is folding it in once."""
     c = math.radians(env.current_dir_deg)
-    cx = env.current_speed * math.cos(c) - frame_velocity[0]
-    cy = env.current_speed * math.sin(c) - frame_velocity[1]
+    cx = env.current_speed * math.cos(c) + env.frame_vx - frame_velocity[0]
+    cy = env.current_speed * math.sin(c) + env.frame_vy - frame_velocity[1]
     speed = math.hypot(cx, cy)
     return env.model_copy(update={
-        "current_speed": speed,
+        "current_speed": speed, "frame_vx": frame_velocity[0], "frame_vy": frame_velocity[1],
         "current_dir_deg": math.degrees(math.atan2(cy, cx)) % 360.0 if speed > 1e-9
         else env.current_dir_deg})
 
