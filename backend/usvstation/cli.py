@@ -82,49 +82,7 @@ def build_parser() -> argparse.ArgumentParser:
             "attaches a real one. Every option can also be set as USV_STATION_<NAME>."
         ),
     )
-    serve.add_argument("--host", help="address to bind (default 127.0.0.1)")
-    serve.add_argument("--port", type=int, help="HTTP port (default 8000)")
-    serve.add_argument("--link", help="'sim' (default), a serial device or a pyserial URL")
-    serve.add_argument("--baud", type=int, help="serial baud rate (default 57600)")
-    serve.add_argument("--data-dir", type=Path, help="database and token folder (default ./data)")
-    serve.add_argument("--token", help="access token (default: generated into the data dir)")
-    serve.add_argument("--viser-port", type=int, help="3D view port (default 8080)")
-    serve.add_argument("--viewer-token", help="read-only token: telemetry, runs, exports, "
-                       "plans, the websocket (default: none)")
-    serve.add_argument("--allowed-hosts", type=lambda v: [h for h in v.split(",") if h],
-                       help="comma-separated Host names accepted besides IP addresses, "
-                       "localhost and --host (DNS-rebinding guard)")
-    serve.add_argument("--allowed-origins", type=lambda v: [h for h in v.split(",") if h],
-                       help="comma-separated websocket Origins accepted besides the station's")
-    serve.add_argument("--max-body-bytes", type=int, help="request body limit (default 1 MiB)")
-    serve.add_argument("--max-ws-clients", type=int, help="live websocket clients (default 64)")
-    serve.add_argument("--plan-timeout-s", type=float,
-                       help="wall-clock limit of one plan (default 10 s)")
-    serve.add_argument("--plan-memory-mb", type=int,
-                       help="memory limit of a plan worker (default 2048 MB)")
-    serve.add_argument("--plan-queue", type=int,
-                       help="plans queued or running at most (default 32; then 429)")
-    serve.add_argument("--charts", dest="charts_dir", type=Path,
-                       help="folder of offline chart packages (*.mbtiles) for the console's map")
-    serve.add_argument("--sim-speed", type=float,
-                       help="simulated boat time runs this many times faster (default 1)")
-    serve.add_argument("--sim-gnss-error", action=argparse.BooleanOptionalAction, default=None,
-                       help="the simulated boat's fixes carry GNSS error (default on; "
-                       "--no-sim-gnss-error reports its exact position)")
-    serve.add_argument("--nmea", action="append", metavar="URL",
-                       help="ship sensors, NMEA 0183 and AIS (repeatable): udp://0.0.0.0:10110, "
-                       "tcp://HOST:PORT, serial:///dev/ttyUSB0?baud=38400 or a device path")
-    serve.add_argument("--replan", choices=["auto", "confirm", "off"],
-                       help="on a warning: re-plan and swap (auto), propose a re-plan for the "
-                       "operator to confirm (confirm, default) or only alert (off)")
-    # usv-link 2 (issue 11): pairing and signing
-    serve.add_argument("--boat-id", type=int,
-                       help="MAVLink system id of the paired boat (default 1; station is 255)")
-    serve.add_argument("--link-key", type=Path, metavar="PATH",
-                       help="32-byte signing key file (usv-station link-key new PATH); with the "
-                       "simulated boat default: generated into the data dir")
-    serve.add_argument("--insecure-link", action="store_true", default=None,
-                       help="unsigned link (anyone with a radio can command the boat)")
+    add_settings_flags(serve)
 
     sim = sub.add_parser(
         "sim", help="run the simulated boat on a serial port",
@@ -202,6 +160,47 @@ def build_parser() -> argparse.ArgumentParser:
                        help="compare: add OMPL's RRT*, Informed RRT* and BIT* (pip install ompl)")
     _add_campaign_parser(sub)
     return parser
+
+
+def add_settings_flags(parser: argparse.ArgumentParser) -> None:
+    """One flag per Settings field (config.py holds the names, types, defaults, bounds
+    and help texts): --field-name, bools as --x/--no-x, lists comma-separated or, marked
+    `repeat`, repeated; every default is None so only the flags given override the
+    USV_STATION_* variables."""
+    from typing import Literal, get_args, get_origin
+
+    from usvstation.config import Settings
+
+    for name, field in Settings.model_fields.items():
+        extra = field.json_schema_extra if isinstance(field.json_schema_extra, dict) else {}
+        flag = str(extra.get("flag", "--" + name.replace("_", "-")))
+        default = field.get_default(call_default_factory=True)
+        if isinstance(default, bool):
+            default = "on" if default else "off"
+        shown = f" (default {default})" if default not in (None, [], "") else ""
+        kw: dict[str, object] = {"dest": name, "default": None,
+                                 "help": (field.description or name) + shown}
+        if "metavar" in extra:
+            kw["metavar"] = extra["metavar"]
+        kinds = [a for a in get_args(field.annotation) or (field.annotation,) if a is not None
+                 and a is not type(None)]
+        kind = kinds[0] if kinds else str
+        if kind is bool:
+            kw["action"] = argparse.BooleanOptionalAction
+        elif get_origin(field.annotation) is Literal:
+            kw["choices"] = list(get_args(field.annotation))
+        elif get_origin(kind) is list or get_origin(field.annotation) is list:
+            if extra.get("repeat"):
+                kw["action"] = "append"
+            else:
+                kw["type"] = _comma_list
+        else:
+            kw["type"] = kind if kind in (int, float, Path) else str
+        parser.add_argument(flag, **kw)  # type: ignore[arg-type]
+
+
+def _comma_list(value: str) -> list[str]:
+    return [item for item in value.split(",") if item]
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -301,16 +300,8 @@ def _cmd_serve(args: argparse.Namespace) -> int:
     from usvstation.config import ExposureError, LinkKeyError, Settings
     from usvstation.scenario import format_validation_error
 
-    flags = {k: getattr(args, k) for k in ("host", "port", "link", "baud", "data_dir", "token",
-                                           "viser_port", "sim_speed", "sim_gnss_error", "nmea",
-                                           "replan",
-                                           "boat_id", "link_key", "insecure_link",
-                                           "viewer_token", "allowed_hosts", "allowed_origins",
-                                           "max_body_bytes", "max_ws_clients", "plan_timeout_s",
-                                           "plan_memory_mb", "plan_queue")
+    flags = {k: getattr(args, k) for k in Settings.model_fields
              if getattr(args, k, None) is not None}
-    if args.charts_dir is not None:
-        flags["charts_dir"] = args.charts_dir
     try:
         settings = Settings(**flags)
     except ValidationError as exc:

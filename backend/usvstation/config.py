@@ -47,49 +47,73 @@ class Settings(BaseSettings):
 
     model_config = SettingsConfigDict(env_prefix="USV_STATION_", extra="forbid")
 
-    host: str = "127.0.0.1"
-    port: int = Field(8000, ge=0, le=65535)
-    link: str = Field("sim", description="'sim', a serial device or a pyserial URL")
-    baud: int = Field(57600, gt=0)
-    data_dir: Path = Path("data")
-    token: str | None = Field(None, description="bearer token; default: generated in data_dir")
-    viser_port: int = Field(8080, ge=0, le=65535)
-    sim_speed: float = Field(1.0, gt=0.0, le=100.0)
+    # Each field is a `serve` flag (--field-name, cli.py generates them from here) and a
+    # USV_STATION_FIELD_NAME variable. `flag`: another flag name; `repeat`: a repeatable
+    # flag, else a list is one comma-separated value; `metavar`: the value's name in --help.
+    host: str = Field("127.0.0.1", description="address to bind")
+    port: int = Field(8000, ge=0, le=65535, description="HTTP port (0: any free port)")
+    link: str = Field("sim", description="the boat link: 'sim' (the simulated boat on a "
+                      "pseudo-terminal), a serial device or a pyserial URL (socket://host:port)")
+    baud: int = Field(57600, gt=0, description="serial baud rate")
+    data_dir: Path = Field(Path("data"), description="database, token and key folder")
+    token: str | None = Field(None, description="operator access token; default: generated "
+                              "into the data dir")
+    viser_port: int = Field(8080, ge=0, le=65535, description="3D view port (loopback only; "
+                            "browsers reach it at /3d/)")
+    sim_speed: float = Field(1.0, gt=0.0, le=100.0, description="simulated boat time runs "
+                             "this many times faster")
     sim_gnss_error: bool = Field(True, description="the simulated boat's GNSS fixes carry "
                                  "a wandering bias (0.8 m) and white error (0.4 m); off: exact")
-    cors_origins: list[str] = Field(default_factory=list)
-    plan_workers: int = Field(2, ge=1, le=32)
-    heartbeat_timeout_s: float = Field(3.0, gt=0.0)
-    telemetry_hz: float = Field(5.0, gt=0.0, le=50.0)
+    cors_origins: list[str] = Field(default_factory=list, description="origins allowed by "
+                                    "CORS for the HTTP API (comma-separated)")
+    plan_workers: int = Field(2, ge=1, le=32, description="plan worker processes")
+    heartbeat_timeout_s: float = Field(3.0, gt=0.0, description="link time without a frame "
+                                       "from the boat before the link is down")
+    telemetry_hz: float = Field(5.0, gt=0.0, le=50.0, description="the simulated boat's "
+                                "telemetry rate, per second of boat time")
     viewer_token: str | None = Field(None, description="read-only token (telemetry, runs, "
                                      "exports, plans, websocket); default: none")
     allowed_hosts: list[str] = Field(default_factory=list, description="Host header names "
-                                     "accepted besides IP addresses, localhost and --host")
+                                     "accepted besides IP addresses, localhost and --host "
+                                     "(DNS-rebinding guard; comma-separated)")
     allowed_origins: list[str] = Field(default_factory=list, description="websocket Origins "
-                                       "accepted besides the station's own")
-    max_body_bytes: int = Field(1 << 20, ge=1024, le=1 << 30)
-    max_ws_clients: int = Field(64, ge=1, le=10_000)
-    max_connections: int = Field(2048, ge=16, le=100_000)
-    header_timeout_s: float = Field(10.0, gt=0.0, le=300.0)
-    keep_alive_s: float = Field(5.0, gt=0.0, le=300.0)
-    plan_timeout_s: float = Field(10.0, gt=0.0, le=3600.0)
-    plan_memory_mb: int = Field(2048, ge=512, le=1 << 20)
-    plan_queue: int = Field(32, ge=1, le=10_000)
+                                       "accepted besides the station's own (comma-separated)")
+    max_body_bytes: int = Field(1 << 20, ge=1024, le=1 << 30, description="request body "
+                                "limit, enforced while the body streams in")
+    max_ws_clients: int = Field(64, ge=1, le=10_000, description="live websocket clients "
+                                "(then 503)")
+    max_connections: int = Field(2048, ge=16, le=100_000, description="open HTTP "
+                                 "connections (then 503)")
+    header_timeout_s: float = Field(10.0, gt=0.0, le=300.0, description="time a client "
+                                    "has to send a request's headers")
+    keep_alive_s: float = Field(5.0, gt=0.0, le=300.0, description="idle keep-alive time")
+    plan_timeout_s: float = Field(10.0, gt=0.0, le=3600.0, description="wall-clock limit "
+                                  "of one plan")
+    plan_memory_mb: int = Field(2048, ge=512, le=1 << 20, description="memory limit of a "
+                                "plan worker, MB")
+    plan_queue: int = Field(32, ge=1, le=10_000, description="plans queued or running at "
+                            "most (then 429)")
     nmea: list[str] = Field(
-        default_factory=list, description="ship-input sources (NMEA 0183, AIS): "
-        "udp://HOST:PORT, tcp://HOST:PORT, serial:///dev/DEVICE?baud=N or a device path")
+        default_factory=list, description="ship sensors, NMEA 0183 and AIS (repeatable): "
+        "udp://0.0.0.0:10110, tcp://HOST:PORT, serial:///dev/ttyUSB0?baud=38400 or a device "
+        "path", json_schema_extra={"repeat": True, "metavar": "URL"})
     replan: Literal["auto", "confirm", "off"] = Field(
-        "confirm", description="on a warning: re-plan and swap (auto), propose (confirm), "
-        "or only alert (off)")
+        "confirm", description="on a warning: re-plan and swap (auto), propose a re-plan for "
+        "the operator to confirm (confirm) or only alert (off)")
     boat_id: int = Field(1, ge=1, le=254, description="MAVLink system id of the paired boat")
     station_id: int = Field(255, ge=1, le=255, description="this station's MAVLink system id")
-    link_key: Path | None = Field(None, description="usv-link signing key file (32 bytes hex)")
-    insecure_link: bool = Field(False, description="unsigned link: explicit opt-in only")
+    link_key: Path | None = Field(None, description="32-byte signing key file (usv-station "
+                                  "link-key new PATH); with the simulated boat default: "
+                                  "generated into the data dir",
+                                  json_schema_extra={"metavar": "PATH"})
+    insecure_link: bool = Field(False, description="unsigned link (anyone with a radio can "
+                                "command the boat): explicit opt-in only")
     frontend_dir: Path | None = Field(
         None, description="operator console files (index.html, app/, node_modules/); "
         "default: frontend/ of the source checkout")
     charts_dir: Path | None = Field(
-        None, description="folder of offline chart packages (*.mbtiles) served at /api/charts")
+        None, description="folder of offline chart packages (*.mbtiles) for the console's map",
+        json_schema_extra={"flag": "--charts"})
 
     @field_validator("nmea")
     @classmethod
