@@ -94,3 +94,25 @@ def test_enclosed_goal_exits_3(tmp_path):
 def test_usage_errors_exit_2(argv):
     out = run(*argv)
     assert out.returncode == 2 and "usage:" in out.stderr
+
+
+def test_every_setting_is_a_serve_flag_and_flags_reach_the_settings():
+    from usvstation.cli import build_parser
+    from usvstation.config import Settings
+
+    args = build_parser().parse_args([
+        "serve", "--plan-queue", "5", "--no-sim-gnss-error", "--allowed-hosts", "a.local,b",
+        "--nmea", "udp://0.0.0.0:10110", "--nmea", "tcp://127.0.0.1:2000", "--replan", "auto",
+        "--charts", "charts", "--insecure-link", "--keep-alive-s", "2.5"])
+    given = {k: getattr(args, k) for k in Settings.model_fields if getattr(args, k) is not None}
+    assert given == {"plan_queue": 5, "sim_gnss_error": False, "allowed_hosts": ["a.local", "b"],
+                     "nmea": ["udp://0.0.0.0:10110", "tcp://127.0.0.1:2000"],
+                     "replan": "auto", "charts_dir": Path("charts"), "insecure_link": True,
+                     "keep_alive_s": 2.5}
+    s = Settings(**given)
+    assert (s.plan_queue, s.sim_gnss_error, s.keep_alive_s) == (5, False, 2.5)
+    help_text = run("serve", "--help").stdout
+    flags = {f"--{name.replace('_', '-')}" for name in Settings.model_fields} - {"--charts-dir"}
+    assert all(flag in help_text for flag in flags | {"--charts"})
+    assert "plans queued or running at most (then 429) (default 32)" in " ".join(
+        help_text.split())
