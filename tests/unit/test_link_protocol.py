@@ -360,3 +360,24 @@ def test_telemetry_overtaken_by_a_hold_report_keeps_the_state_of_its_own_instant
     assert len(before) > 10 and len(after) > 10
     assert {r.state for r in before} == {"RUNNING"}
     assert {r.state for r in after} == {"HOLD"}
+
+
+def test_a_completed_mission_reports_where_it_ended_before_done_on_a_full_line():
+    """The line is too slow for the telemetry (19200 baud, 20 Hz: the boat drops frames),
+    yet the last position the station hears before the boat reports DONE is where the
+    mission ended, so a run's track ends at the ramp."""
+    from link_harness import FRAME
+
+    from usvstation.link.protocol import BoatReport, TelemetryReceived
+
+    h = Harness(boat_cfg=BoatConfig(baud=19200, telemetry_hz=20))
+    h.connect()
+    m = make_mission(7, n=4, speed=3.0)
+    assert _upload(h, m).ok and _command(h, "start", m).accepted
+    assert h.run(60, until=lambda: h.station.report.state == "DONE")
+    assert h.boat.telemetry_dropped > 0
+    done = next(i for i, e in enumerate(h.events)
+                if isinstance(e, BoatReport) and e.report.state == "DONE")
+    last = [e for e in h.events[:done] if isinstance(e, TelemetryReceived)][-1].telemetry
+    x, y = FRAME.to_ramp(last.lat, last.lon)
+    assert abs(float(x)) < 0.05 and abs(float(y)) < 0.05

@@ -595,6 +595,7 @@ class BoatProtocol:
         if self.guided_until is not None and now >= self.guided_until:
             self._clear_guidance()
         if self.state == S_RUNNING and self.vehicle.state.mission_complete:
+            self._final_fix(now)
             self.state = S_DONE
             self._text(mav.MAV_SEVERITY_INFO, f"mission {self.active.mission_id} complete", now)
             self._report(now)
@@ -668,9 +669,18 @@ class BoatProtocol:
         return d
 
     # ---- telemetry
-    def _send_telemetry(self, now: float, full: bool = False) -> None:
+    def _final_fix(self, now: float) -> None:
+        """At the mission's end, ahead of the DONE report: the telemetry still queued, then
+        the position where the boat finished, so a run's track ends where the boat did
+        (however busy the line was)."""
+        while self._telemetry:
+            self._urgent += self.codec.encode(self._telemetry.popleft(), self._stamp(now))
+        self._send_telemetry(now, urgent=True)
+
+    def _send_telemetry(self, now: float, full: bool = False, urgent: bool = False) -> None:
         """USV_THRUST and GLOBAL_POSITION_INT (last: it completes a station row) at
-        telemetry_hz; ATTITUDE, GPS_RAW_INT, VFR_HUD, NAV_CONTROLLER_OUTPUT with `full`."""
+        telemetry_hz; ATTITUDE, GPS_RAW_INT, VFR_HUD, NAV_CONTROLLER_OUTPUT with `full`;
+        `urgent`: ahead of the queued telemetry, never dropped."""
         s = self.vehicle.state
         e = self.codec.mav
         dx, dy = self.gps.sample(1.0 / self.cfg.telemetry_hz)
@@ -700,11 +710,11 @@ class BoatProtocol:
                                                 xte), now, telemetry=True)
         send(e.usv_thrust_encode(t_ms, _clamp(round(s.thrust_left * 1000), -1000, 1000),
                                  _clamp(round(s.thrust_right * 1000), -1000, 1000), xte, 0.0),
-             now, telemetry=True)
+             now, telemetry=not urgent)
         send(e.global_position_int_encode(t_ms, lat_e7, lon_e7, 0, 0,
                                           _clamp(CM.to_wire(vn), -32768, 32767),
                                           _clamp(CM.to_wire(ve), -32768, 32767), 0,
-                                          CDEG.to_wire(hdg)), now, telemetry=True)
+                                          CDEG.to_wire(hdg)), now, telemetry=not urgent)
 
 
 _FROM_STATION = {
