@@ -154,7 +154,13 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("--families", help="compare: comma-separated families (default all: "
                        "recovery, transit, dense, colregs, traps)")
     bench.add_argument("--hidden", type=int, default=6,
-                       help="compare: seeded random recoveries beside the public suite")
+                       help="compare: seeded hidden scenarios per family beside the public ones")
+    bench.add_argument("--hidden-from", type=int, default=1000, metavar="SEED",
+                       help="compare: seed of the first hidden scenario (default 1000)")
+    bench.add_argument("--first-seed", type=int, default=1, metavar="SEED",
+                       help="compare: first planner seed (default 1)")
+    bench.add_argument("--no-track", action="store_true",
+                       help="compare: skip sailing the plans with the simulated boat")
     bench.add_argument("--plots", type=Path, help="compare: folder for the SVG figures")
     bench.add_argument("--ompl", action="store_true",
                        help="compare: add OMPL's RRT*, Informed RRT* and BIT* (pip install ompl)")
@@ -407,7 +413,8 @@ def _cmd_bench_compare(args: argparse.Namespace) -> int:
             planners=args.planners.split(",") if args.planners else None,
             families=args.families.split(",") if args.families else None,
             seeds=args.seeds if args.seeds != 5 else 2, hidden=args.hidden, plots=args.plots,
-            ompl=args.ompl,
+            ompl=args.ompl, first_seed=args.first_seed, hidden_from=args.hidden_from,
+            track=not args.no_track,
             progress=lambda msg: print(msg, file=sys.stderr, flush=True))
     except ValueError as exc:
         raise CliError(str(exc), EXIT_INVALID) from None

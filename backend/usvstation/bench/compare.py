@@ -6,7 +6,10 @@ pairs of Tab. 5/6 on seeded 1 km maps), colregs (single-target head-on,
 crossings both ways, overtaking both ways, two mixes) and traps (003).
 Metrics per plan: success, length, normalisation index, duration, water
 clearance, total and maximum turn, plan time and, on COLREGs encounters,
-the compliance score of `planning.colregs.compliance`. Summaries:
+the compliance score of `planning.colregs.compliance`, and the tracked
+deviation when the simulated boat sails the plan. Each family has public
+scenarios and seeded hidden ones (`hidden`, from seed `hidden_from`).
+Summaries:
 `table_004` (ratios on the dense family, beside the paper's),
 `replan_002` (re-planning latency percentiles), `colregs_001` (starboard
 rule on head-on and give-way crossings; improved vs conventional GA).
@@ -110,25 +113,125 @@ def trap_cases() -> list[Scenario]:
     ]
 
 
-def family_scenarios(family: str, hidden: int = 0, dense_maps: int = 2) -> list[Scenario]:
+def transit_hidden(seed: int) -> Scenario:
+    """002 Tab. V's map moved: obstacles shifted up to 25 m, movers' courses turned up to 20
+    degrees and their speeds scaled by 0.8-1.2, the boat at 2-3 m/s."""
+    rng = np.random.default_rng([2, seed])
+    base = transit_002(3.0)
+    obs = []
+    for o in base.obstacles:
+        dx, dy = rng.uniform(-25.0, 25.0, size=2)
+        turn = math.radians(rng.uniform(-20.0, 20.0)) if o.vx or o.vy else 0.0
+        k = rng.uniform(0.8, 1.2) if o.vx or o.vy else 1.0
+        c, s_ = math.cos(turn), math.sin(turn)
+        obs.append({"x": round(o.x + dx, 2), "y": round(o.y + dy, 2), "radius": o.radius,
+                    "vx": round(k * (c * o.vx - s_ * o.vy), 6),
+                    "vy": round(k * (s_ * o.vx + c * o.vy), 6)})
+    obs = [o for o in obs if min(math.hypot(o["x"], o["y"]),
+                                 math.hypot(o["x"] - 400.0, o["y"] - 400.0)) > o["radius"] + 20.0]
+    speed = round(float(rng.uniform(2.0, 3.0)), 2)
+    return _transit(f"transit-hidden-{seed}", (0.0, 0.0), (400.0, 400.0), obs, TRIMARAN, speed)
+
+
+ENCOUNTERS = {  # relative course of the target (deg, clockwise from the boat's) and speed (m/s)
+    "head-on": ((170.0, 190.0), (1.5, 2.5)),
+    "crossing-give-way": ((240.0, 300.0), (1.5, 2.5)),
+    "crossing-stand-on": ((60.0, 120.0), (1.5, 2.5)),
+    "overtaking": ((-10.0, 10.0), (0.5, 1.0)),
+    "overtaken": ((-10.0, 10.0), (3.0, 3.8)),
+}
+
+
+def colregs_hidden(seed: int) -> Scenario:
+    """A seeded encounter of one or two targets of the five kinds, meeting the boat (northwards
+    at 2 m/s to (0, 500)) 80-160 s out with a miss distance of up to 10 m."""
+    rng = np.random.default_rng([1, seed])
+    kinds = list(ENCOUNTERS)
+    obs = []
+    chosen = []
+    for k in range(int(rng.integers(1, 3))):
+        kind = kinds[int(rng.integers(len(kinds)))]
+        chosen.append(kind)
+        (c_lo, c_hi), (v_lo, v_hi) = ENCOUNTERS[kind]
+        course = math.radians(rng.uniform(c_lo, c_hi))
+        speed = rng.uniform(v_lo, v_hi)
+        t_meet = rng.uniform(80.0, 160.0) + 60.0 * k
+        vx, vy = speed * math.sin(course), speed * math.cos(course)
+        mx, my = rng.uniform(-10.0, 10.0), 2.0 * t_meet
+        obs.append({"x": round(mx - vx * t_meet, 3), "y": round(my - vy * t_meet, 3),
+                    "radius": round(float(rng.uniform(3.0, 6.0)), 2),
+                    "vx": round(vx, 6), "vy": round(vy, 6)})
+    obs = [o for o in obs if math.hypot(o["x"], o["y"]) > o["radius"] + 15.0]
+    vessel = dict(USV, speed_max=2.2)
+    return _transit(f"colregs-hidden-{seed}-{'+'.join(chosen)}", (0.0, 0.0), (0.0, 500.0), obs,
+                    vessel, 2.0, 90.0)
+
+
+def trap_hidden(seed: int) -> Scenario:
+    """One of 003's three traps at a seeded scale, size and side, turned to a seeded bearing."""
+    rng = np.random.default_rng([3, seed])
+    kind = ("goal-beside-obstacle", "obstacle-on-line", "u-shape")[seed % 3]
+    dist = float(rng.uniform(80.0, 150.0))
+    if kind == "goal-beside-obstacle":
+        r = rng.uniform(3.0, 5.0)
+        local = [(dist + rng.uniform(-3.0, 3.0), rng.choice([-1.0, 1.0]) * (r + rng.uniform(4.0,
+                  7.0)), r)]
+    elif kind == "obstacle-on-line":
+        local = [(dist * rng.uniform(0.35, 0.65), rng.uniform(-2.0, 2.0), rng.uniform(5.0, 12.0))]
+    else:
+        depth, half = rng.uniform(3.0, 8.0), rng.uniform(10.0, 20.0)
+        x0 = dist * rng.uniform(0.45, 0.65)
+        local = [(x0 + depth * math.cos(a), half * math.sin(a), 3.0)
+                 for a in np.linspace(-math.pi / 2, math.pi / 2, 2 + int(half / 2.5))]
+    bearing = rng.uniform(0.0, 2.0 * math.pi)
+    c, s_ = math.cos(bearing), math.sin(bearing)
+    obs = [{"x": round(c * x - s_ * y, 3), "y": round(s_ * x + c * y, 3), "radius": round(r, 3)}
+           for x, y, r in local]
+    goal = (round(c * dist, 3), round(s_ * dist, 3))
+    return _transit(f"trap-hidden-{seed}-{kind}", (0.0, 0.0), goal, obs, USV, 1.5)
+
+
+HIDDEN_FROM = 1000  # seeds of the hidden scenarios; the public ones are fixed
+
+
+def family_scenarios(family: str, hidden: int = 0, dense_maps: int = 2,
+                     hidden_from: int = HIDDEN_FROM) -> list[Scenario]:
+    """The family's public scenarios, then `hidden` seeded ones from seed `hidden_from` on."""
+    seeds = range(hidden_from, hidden_from + hidden)
     if family == "recovery":
         from usvstation.bench.scenarios import random_recovery
 
-        return ([load_scenario(f"case{i}") for i in range(1, 5)]
-                + [random_recovery(1000 + s) for s in range(hidden)])
+        return [load_scenario(f"case{i}") for i in range(1, 5)] + [random_recovery(s)
+                                                                   for s in seeds]
     if family == "transit":
-        return [transit_002(3.0), transit_002(2.0)]
+        return [transit_002(3.0), transit_002(2.0)] + [transit_hidden(s) for s in seeds]
     if family == "dense":
-        return [dense_004(p, s) for p in range(len(DENSE_PAIRS)) for s in range(dense_maps)]
+        return ([dense_004(p, s) for p in range(len(DENSE_PAIRS)) for s in range(dense_maps)]
+                + [dense_004(s % len(DENSE_PAIRS), s) for s in seeds])
     if family == "colregs":
-        return colregs_cases()
+        return colregs_cases() + [colregs_hidden(s) for s in seeds]
     if family == "traps":
-        return trap_cases()
+        return trap_cases() + [trap_hidden(s) for s in seeds]
     raise ValueError(f"family: unknown family {family!r}; available: {', '.join(FAMILIES)}")
 
 
-def evaluate(scenario: Scenario, family: str, planner: str, seed: int) -> dict[str, Any]:
-    """One episode: plan, check, metrics (the plan already passed the checker)."""
+def tracked_deviation(scenario: Scenario, plan: dict[str, Any]) -> dict[str, Any]:
+    """The simulated boat (3-DOF Otter, paper 000's AV-LOS, the scenario's current and wind,
+    calm sea) sails the plan: mean and largest distance from the timed plan, m."""
+    from usvstation.bench.tracking import DisturbedSetup, track_plan
+    from usvstation.dynamics.environment import Environment
+    from usvstation.dynamics.params import otter
+
+    setup = DisturbedSetup(sea_state=0)
+    res = track_plan(plan, "avlos", otter(), Environment.from_scenario(scenario.environment),
+                     setup, scenario, stop_at_ramp=scenario.kind == "recovery")
+    return {"track_mean_dev_m": res["mean_dev_m"], "track_max_dev_m": res["max_dev_m"]}
+
+
+def evaluate(scenario: Scenario, family: str, planner: str, seed: int,
+             track: bool = False) -> dict[str, Any]:
+    """One episode: plan, check, metrics (the plan already passed the checker); with `track`
+    the simulated boat also sails the plan (`tracked_deviation`)."""
     t0 = time.perf_counter()
     row: dict[str, Any] = {"planner": planner, "family": family, "scenario": scenario.name,
                            "seed": seed}
@@ -137,7 +240,10 @@ def evaluate(scenario: Scenario, family: str, planner: str, seed: int) -> dict[s
     except NoFeasiblePlan as exc:
         return {**row, "success": False, "error": str(exc)[:300],
                 "plan_time_ms": (time.perf_counter() - t0) * 1000.0}
-    return _row_from_plan(row, scenario, family, plan, (time.perf_counter() - t0) * 1000.0)
+    row = _row_from_plan(row, scenario, family, plan, (time.perf_counter() - t0) * 1000.0)
+    if track:
+        row.update(tracked_deviation(scenario, plan))
+    return row
 
 
 def evaluate_ompl(scenario: Scenario, family: str, planner: str, seed: int) -> dict[str, Any]:
@@ -195,8 +301,18 @@ def colregs_metrics(scenario: Scenario, plan: dict[str, Any]) -> dict[str, Any]:
 def run_compare(planners: list[str] | None = None, families: list[str] | None = None,
                 seeds: int = 2, hidden: int = 6, dense_maps: int = 2,
                 progress: Callable[[str], None] | None = None,
-                plots: Path | None = None, ompl: bool = False) -> dict[str, Any]:
-    """Every planner on every family; `ompl` adds OMPL RRT*, Informed RRT*, BIT* if installed."""
+                plots: Path | None = None, ompl: bool = False, first_seed: int = 1,
+                hidden_from: int = HIDDEN_FROM, track: bool = True) -> dict[str, Any]:
+    """Every planner on every family; `ompl` adds OMPL RRT*, Informed RRT*, BIT* if installed.
+
+    Planner seeds are first_seed .. first_seed + seeds - 1; each family has its public
+    scenarios and `hidden` seeded ones from `hidden_from` on. With `track` the simulated
+    boat sails the plan of the first seed of every planner and scenario.
+    """
+    unknown = [p for p in planners or [] if p not in planner_names()]
+    if unknown:
+        raise ValueError(f"planners: unknown planner {unknown[0]!r}; "
+                         f"available: {', '.join(planner_names())}")
     planners = planners or planner_names()
     if ompl:
         from usvstation.bench.ompl_baseline import OMPL_PLANNERS, available
@@ -206,23 +322,26 @@ def run_compare(planners: list[str] | None = None, families: list[str] | None = 
     families = families or list(FAMILIES)
     rows = []
     for fam in families:
-        for sc in family_scenarios(fam, hidden, dense_maps):
+        public = {sc.name for sc in family_scenarios(fam, 0, dense_maps)}
+        for sc in family_scenarios(fam, hidden, dense_maps, hidden_from):
             for pl in planners:
-                for seed in range(1, seeds + 1):
-                    row = evaluate(sc, fam, pl, seed)
+                for seed in range(first_seed, first_seed + seeds):
+                    row = evaluate(sc, fam, pl, seed, track=track and seed == first_seed)
+                    row["hidden"] = sc.name not in public
                     rows.append(row)
                     if progress:
                         progress(f"{fam} {sc.name} {pl} seed {seed}: "
                                  f"{'ok' if row['success'] else 'FAIL'} "
                                  f"{row['plan_time_ms']:.0f} ms")
             for pl in (OMPL_PLANNERS if ompl else ()):
-                for seed in range(1, seeds + 1):
+                for seed in range(first_seed, first_seed + seeds):
                     row = evaluate_ompl(sc, fam, pl, seed)
                     rows.append(row)
                     if progress:
                         progress(f"{fam} {sc.name} ompl:{pl} seed {seed}: "
                                  f"{'ok' if row['success'] else 'FAIL'}")
     result = {"planners": planners, "families": families, "seeds": seeds,
+              "first_seed": first_seed, "hidden": hidden, "hidden_from": hidden_from,
               "summary": summarise(rows), "table_004": table_004(rows),
               "replan_002": replan_002(rows), "colregs_001": colregs_001(rows, seeds, progress),
               "rows": [{k: v for k, v in r.items() if k != "path"} for r in rows]}
@@ -250,11 +369,18 @@ def summarise(rows: list[dict[str, Any]]) -> dict[str, Any]:
                      "length_m": med("length_m"), "normalization_index": med("normalization_index"),
                      "duration_s": med("duration_s"), "min_clearance_m": med("min_clearance_m"),
                      "total_turn_deg": med("total_turn_deg"), "max_turn_deg": med("max_turn_deg"),
-                     "plan_time_ms": round(float(np.median([r["plan_time_ms"] for r in rs])), 2)}
+                     "plan_time_ms": round(float(np.median([r["plan_time_ms"] for r in rs])), 2),
+                     "track_mean_dev_m": med("track_mean_dev_m"),
+                     "public_success": _share([r for r in rs if not r.get("hidden")]),
+                     "hidden_success": _share([r for r in rs if r.get("hidden")])}
             if fam == "colregs":
                 entry["colregs_score"] = med("colregs_score")
             table.setdefault(pl, {})[fam] = entry
     return table
+
+
+def _share(rows: list[dict[str, Any]]) -> float | None:
+    return round(sum(r["success"] for r in rows) / len(rows), 4) if rows else None
 
 
 def table_004(rows: list[dict[str, Any]]) -> dict[str, Any]:
@@ -349,17 +475,19 @@ def colregs_001(rows: list[dict[str, Any]], seeds: int,
 
 
 def render_markdown(result: dict[str, Any]) -> str:
-    lines = ["| planner | family | episodes | success | length m | NI | duration s | "
-             "clearance m | total turn deg | max turn deg | plan ms | COLREGs |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    lines = ["| planner | family | episodes | success | public | hidden | length m | NI | "
+             "duration s | clearance m | total turn deg | max turn deg | plan ms | "
+             "tracked dev m | COLREGs |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for pl, fams in result["summary"].items():
         for fam, e in fams.items():
             lines.append(
                 f"| {pl} | {fam} | {e['episodes']} | {e['success_rate']:.2f} | "
+                f"{_f(e.get('public_success'), 2)} | {_f(e.get('hidden_success'), 2)} | "
                 f"{_f(e['length_m'])} | {_f(e['normalization_index'], 3)} | {_f(e['duration_s'])} "
                 f"| {_f(e['min_clearance_m'], 2)} | {_f(e['total_turn_deg'])} | "
                 f"{_f(e['max_turn_deg'])} | {_f(e['plan_time_ms'])} | "
-                f"{_f(e.get('colregs_score'), 2)} |")
+                f"{_f(e.get('track_mean_dev_m'), 2)} | {_f(e.get('colregs_score'), 2)} |")
     t = result["table_004"]
     lines += ["", "Paper 004 Tab. 5/6 shape (dense family, means over maps and seeds):", "",
               "| algorithm | length m | TTA deg | plan ms | sailing s | NI |",

@@ -296,11 +296,13 @@ def _path_check(scenario: Any) -> Callable[[Trajectory], bool] | None:
 
 def track_plan(plan: dict[str, Any], method: str, params: VesselParams, env: Environment,
                setup: DisturbedSetup, scenario: Any = None,
-               sensors: Callable[[VesselState], Measurement] | None = None) -> dict[str, Any]:
+               sensors: Callable[[VesselState], Measurement] | None = None,
+               stop_at_ramp: bool = True) -> dict[str, Any]:
     """Fly one plan with one method; deviation over the plan and the arrival at x = 0.
 
     `sensors` (default exact readings) turns the simulator's state into what
-    the guidance sees, e.g. sim.sensors.NavSensors.
+    the guidance sees, e.g. sim.sensors.NavSensors. With `stop_at_ramp` off
+    (a transit, which may cross x = 0 anywhere) the run ends at the plan's end.
     """
     traj = Trajectory.from_plan(plan)
     vessel = start_state(plan, params, env)
@@ -318,7 +320,9 @@ def track_plan(plan: dict[str, Any], method: str, params: VesselParams, env: Env
             devs.append(math.hypot(state.x - dx, state.y - dy))
         new = loop.step(env)
         k += 1
-        if state.x > 0.0 >= new.x:
+        if not stop_at_ramp and state.t > traj.end_time:
+            break
+        if stop_at_ramp and state.x > 0.0 >= new.x:
             w = state.x / (state.x - new.x)
             dpsi = angle_diff(new.psi, state.psi)
             crossing = (state.y + w * (new.y - state.y), state.psi + w * dpsi,

@@ -75,8 +75,15 @@ class RRTStarOptions(SeedOptions):
 
 def _drive(scenario: Scenario, seed: int, opts: SeedOptions, name: str,
            core: Callable[[Scenario, World, np.ndarray, float, np.random.Generator], tuple],
-           speeds_from: dict[str, Any] | None = None) -> dict[str, Any]:
-    """Common attempt loop: gate (recovery), seed, clearance; first plan passing the checker."""
+           speeds_from: dict[str, Any] | None = None, static_only: bool = False
+           ) -> dict[str, Any]:
+    """Common attempt loop: gate (recovery), seed, clearance; first plan passing the checker.
+
+    A planner whose paper knows only static obstacles (`static_only`) plans
+    first against the movers' swept corridors (`World.swept_window`), then,
+    if that finds nothing the timed checker accepts, against the movers
+    timed at cruise speed; `metrics.obstacle_model` says which one gave the plan.
+    """
     t0 = time.perf_counter()
     cruise = cruise_speed(scenario, opts.cruise_speed)
     v = scenario.vessel
@@ -90,32 +97,54 @@ def _drive(scenario: Scenario, seed: int, opts: SeedOptions, name: str,
         world = World.from_scenario(scenario, margin)
         gate = gates[attempt % len(gates)]
         target = np.array([scenario.goal.x, scenario.goal.y]) if gate is None else gate
-        rng = np.random.default_rng([seed, attempt])
-        route, extra = core(scenario, world, target, cruise, rng)
-        if route is None:
-            last = extra.get("reason", last) if isinstance(extra, dict) else last
-            continue
-        speeds = None
-        if speeds_from is not None and "speeds" in speeds_from:
-            speeds = np.asarray(speeds_from["speeds"], float)
-        if gate is not None:
-            route = np.vstack([route, [[0.0, 0.0]]])
-            if speeds is not None:
-                speeds = np.append(speeds, speeds[-1])
-        try:
-            plan = finish_plan(scenario, route, name, seed, cruise, time.perf_counter() - t0,
-                               {**(extra or {}), "attempts": attempt + 1,
-                                "inflation_m": round(margin, 6)}, cut=opts.corner_cut_m,
-                               speeds=speeds)
-        except NoFeasiblePlan as exc:
-            last = str(exc).removeprefix("no feasible plan: ").removeprefix(f"{name}: ")
-            continue
-        plan["metrics"]["elapsed_s"] = round(time.perf_counter() - t0, 6)
-        if margin < margins[0]:
-            plan["warnings"].append(
-                f"reduced clearance: planned with {margin:g} m instead of eq. 7's {margins[0]:g} m")
-        return plan
+        for model, seen in _obstacle_models(scenario, world, target, cruise, static_only):
+            rng = np.random.default_rng([seed, attempt])
+            route, extra = core(scenario, seen, target, cruise, rng)
+            if route is None:
+                last = extra.get("reason", last) if isinstance(extra, dict) else last
+                continue
+            plan, last = _finish_attempt(scenario, route, extra, gate, speeds_from, name, seed,
+                                         cruise, t0, opts, attempt, margin, model, last)
+            if plan is None:
+                continue
+            if margin < margins[0]:
+                plan["warnings"].append(f"reduced clearance: planned with {margin:g} m "
+                                        f"instead of eq. 7's {margins[0]:g} m")
+            return plan
     raise NoFeasiblePlan(f"no feasible plan: {name}: {last}")
+
+
+def _obstacle_models(scenario: Scenario, world: World, target: np.ndarray, cruise: float,
+                     static_only: bool) -> list[tuple[str, World]]:
+    """The obstacle models to try in turn: swept corridors first for a static-only planner."""
+    if not static_only or not world.moving.any():
+        return [("timed", world)]
+    start = np.array([scenario.start.x, scenario.start.y])
+    horizon = 1.3 * float(np.hypot(*(target - start))) / cruise + 30.0
+    return [("swept", world.swept_window(start, cruise, horizon)), ("timed", world)]
+
+
+def _finish_attempt(scenario: Scenario, route: np.ndarray, extra: Any, gate: np.ndarray | None,
+                    speeds_from: dict[str, Any] | None, name: str, seed: int, cruise: float,
+                    t0: float, opts: SeedOptions, attempt: int, margin: float, model: str,
+                    last: str) -> tuple[dict[str, Any] | None, str]:
+    """The plan of one route (run-in appended, checked), or None and the checker's reason."""
+    speeds = None
+    if speeds_from is not None and "speeds" in speeds_from:
+        speeds = np.asarray(speeds_from["speeds"], float)
+    if gate is not None:
+        route = np.vstack([route, [[0.0, 0.0]]])
+        if speeds is not None:
+            speeds = np.append(speeds, speeds[-1])
+    try:
+        plan = finish_plan(scenario, route, name, seed, cruise, time.perf_counter() - t0,
+                           {**(extra or {}), "attempts": attempt + 1,
+                            "inflation_m": round(margin, 6), "obstacle_model": model},
+                           cut=opts.corner_cut_m, speeds=speeds)
+    except NoFeasiblePlan as exc:
+        return None, str(exc).removeprefix("no feasible plan: ").removeprefix(f"{name}: ")
+    plan["metrics"]["elapsed_s"] = round(time.perf_counter() - t0, 6)
+    return plan, last
 
 
 def _bounds(scenario: Scenario, target: np.ndarray, pad: float | None = None
@@ -151,7 +180,7 @@ def _rrt_family(kind: str) -> Callable[[Scenario, int, RRTStarOptions], dict[str
 
     def run(sc: Scenario, seed: int, o: RRTStarOptions) -> dict[str, Any]:
         name = {"rrt": "rrt-star", "bspline": "bspline-rrt-star", "vpf": "vpf-rrt-star"}[kind]
-        return _drive(sc, seed, o, name, lambda *a: core(*a, o))
+        return _drive(sc, seed, o, name, lambda *a: core(*a, o), static_only=True)
 
     return run
 
@@ -184,13 +213,13 @@ _register(PlannerInfo(
     (MOVING, RAMP, SPEED, SEEDED), _IGAPassThrough, _run_iga))
 _register(PlannerInfo(
     "rrt-star", "004", "RRT* (Alg. 1 without the VPF step)",
-    (MOVING_TIMED, RUN_IN, SEEDED), RRTStarOptions, _rrt_family("rrt")))
+    (SWEPT, MOVING_TIMED, RUN_IN, SEEDED), RRTStarOptions, _rrt_family("rrt")))
 _register(PlannerInfo(
     "bspline-rrt-star", "004", "RRT* smoothed by an interpolating cubic B-spline",
-    (MOVING_TIMED, RUN_IN, SEEDED), RRTStarOptions, _rrt_family("bspline")))
+    (SWEPT, MOVING_TIMED, RUN_IN, SEEDED), RRTStarOptions, _rrt_family("bspline")))
 _register(PlannerInfo(
     "vpf-rrt-star", "004", "RRT* with the virtual potential field node adjustment (eq. 7-12)",
-    (MOVING_TIMED, RUN_IN, SEEDED), RRTStarOptions, _rrt_family("vpf")))
+    (SWEPT, MOVING_TIMED, RUN_IN, SEEDED), RRTStarOptions, _rrt_family("vpf")))
 
 
 def planner_names() -> list[str]:
@@ -311,7 +340,7 @@ def _run_de_apf(sc: Scenario, seed: int, o: DEAPFOptionsModel) -> dict[str, Any]
                           maxiter=o.maxiter, paper_kappa=o.kappa == "paper")
         return plan_de_apf(start, target, world, cruise, int(rng.integers(2**31)), do)
 
-    return _drive(sc, seed, o, "de-apf", core)
+    return _drive(sc, seed, o, "de-apf", core, static_only=True)
 
 
 _register(PlannerInfo(
@@ -319,7 +348,7 @@ _register(PlannerInfo(
     (MOVING, REPLAN, RUN_IN, SEEDED), ReplanGAOptions, _run_replan_ga))
 _register(PlannerInfo(
     "de-apf", "003", "Potential field with parameters evolved by differential evolution",
-    (MOVING_TIMED, RUN_IN, SEEDED), DEAPFOptionsModel, _run_de_apf))
+    (SWEPT, MOVING_TIMED, RUN_IN, SEEDED), DEAPFOptionsModel, _run_de_apf))
 _ORDER = ("iga", "colregs-ga", "replan-ga", "de-apf", "rrt-star", "bspline-rrt-star",
           "vpf-rrt-star")
 PLANNERS = {k: PLANNERS[k] for k in _ORDER}

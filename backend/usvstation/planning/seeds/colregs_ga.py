@@ -84,6 +84,12 @@ def plan_colregs_ga(start: np.ndarray, heading: float, speed0: float, target: np
     t = 0.0
     reach = max(4.0, 3.0 * vmax)
     h = np.linspace(1.0, o.lookahead_s, max(2, int(o.lookahead_s)))
+    # water the goal itself leaves to the static obstacles: wanting more than that near
+    # the goal would keep the boat from ever reaching it (PROPOSED; 001 has no goal rule)
+    still = ~world.moving
+    goal_room = float((np.hypot(world.cx[still] - target[0], world.cy[still] - target[1])
+                       - world.inflated[still]).min()) if still.any() else o.d_ca
+    d_cap0 = float(np.clip(goal_room, 1.0, o.d_ca))
     steps_max = min(o.max_steps, int(3.0 * d_start / max(0.5 * vmax, vmin)) + 60)
     for _ in range(steps_max):
         if np.hypot(*(target - p)) <= reach:
@@ -163,7 +169,7 @@ def plan_colregs_ga(start: np.ndarray, heading: float, speed0: float, target: np
                 core = K_AHP[0] * 1e5 / np.maximum(d, 1e-3) + K_AHP[1] * d0 + K_AHP[2] * d1
             else:
                 core = (K_AHP[0] * (1.0 - d / d_start) * 4.0
-                        + K_AHP[1] * np.clip(d0, 0.0, o.d_ca) / o.d_ca
+                        + K_AHP[1] * np.clip(d0, 0.0, d_cap0) / d_cap0
                         + K_AHP[2] * np.clip(d1, 0.0, o.d_ca) / o.d_ca)
                 core = core - core.min() + 1e-3 if core.min() <= 0 else core
             f = np.where(in_sector, core / o.lam, core * o.lam)

@@ -71,6 +71,39 @@ class World:
         z = np.zeros_like(cxa)
         return World(cxa, cya, z, z.copy(), np.concatenate(r), np.concatenate(ri))
 
+    def swept_window(self, start: np.ndarray, cruise: float, horizon_s: float,
+                     slow: float = 1.3, fast: float = 1.1) -> World:
+        """Static corridors: each mover's track over [0, horizon] where the boat could meet it.
+
+        For planners whose paper knows only static obstacles (003, 004). A
+        piece of the track at time s is kept when its distance from the start
+        lies within [s cruise / slow - r, s cruise fast + r] (r the inflated
+        radius): where a boat sailing at about `cruise` on a path up to `slow`
+        times the straight line could be at that time. A mover thus becomes a
+        static wall over the stretch of water where it could cross the boat's
+        way; its track elsewhere is left open. Static circles are kept as they are.
+        Pieces are spaced at most 0.7 inflated radii apart, so their union covers the
+        corridor to 0.7 radii either side of the track.
+        """
+        still = ~self.moving
+        cx, cy, r, ri = [self.cx[still]], [self.cy[still]], [self.radius[still]], \
+            [self.inflated[still]]
+        for i in np.flatnonzero(self.moving):
+            speed = math.hypot(self.vx[i], self.vy[i])
+            n = 2 + math.ceil(speed * horizon_s / max(0.7 * self.inflated[i], 0.25))
+            s = np.linspace(0.0, horizon_s, n)
+            px, py = self.cx[i] + self.vx[i] * s, self.cy[i] + self.vy[i] * s
+            d = np.hypot(px - start[0], py - start[1])
+            keep = (d >= s * cruise / slow - self.inflated[i]) & \
+                (d <= s * cruise * fast + self.inflated[i])
+            cx.append(px[keep])
+            cy.append(py[keep])
+            r.append(np.full(int(keep.sum()), self.radius[i]))
+            ri.append(np.full(int(keep.sum()), self.inflated[i]))
+        cxa, cya = np.concatenate(cx), np.concatenate(cy)
+        z = np.zeros_like(cxa)
+        return World(cxa, cya, z, z.copy(), np.concatenate(r), np.concatenate(ri))
+
     def segments_hit(self, p0: np.ndarray, t0: np.ndarray, p1: np.ndarray, t1: np.ndarray,
                      radius: np.ndarray | None = None) -> np.ndarray:
         """(N,) True where segment i (timed, paper 000 eq. 9) enters any inflated circle."""

@@ -6,7 +6,9 @@ terms F1 (obstacle -> boat) and F2 (boat -> goal; FIX: eq. 2.7 prints only
 F1); a capped attraction (quadratic within d*, conic beyond, §3).
 Moving obstacles are sampled at t = arc length / cruise speed. Walkers step
 w <- w + s F/|F|; a walker stuck (|F| ~ 0 or no progress over 20 steps)
-gets a seeded sideways kick (PROPOSED escape, digest 4.3).
+follows the nearest obstacle's edge on a seeded side until it is nearer the goal
+than where it got stuck (PROPOSED escape, Bug-style; digest 4.3 proposes a
+sideways kick, which does not leave a U shape).
 
 DE [003 §2.4]: theta = (k_att, lambda, w0, d*) evolved by
 scipy.optimize.differential_evolution (rand1bin, vectorized: every
@@ -59,6 +61,9 @@ def rollout(theta: np.ndarray, start: np.ndarray, goal: np.ndarray, world: World
     alive = np.ones(s_n, bool)
     arc = np.zeros(s_n)
     last = np.full(s_n, n_max)
+    follow = np.zeros(s_n, bool)        # walkers following an obstacle's boundary
+    side = np.ones(s_n)                 # +1 counter-clockwise, -1 clockwise
+    hit_d = np.zeros(s_n)               # distance to the goal where the walker got stuck
     for k in range(n_max):
         active = alive & ~arrived
         if not active.any():
@@ -84,13 +89,22 @@ def rollout(theta: np.ndarray, start: np.ndarray, goal: np.ndarray, world: World
             f = f + f2.sum(1)[:, None] * ug
         fn = np.hypot(f[:, 0], f[:, 1])[:, None]
         direction = f / np.maximum(fn, 1e-12)
-        stuck = fn[:, 0] < 1e-9
+        stuck = (fn[:, 0] < 1e-9) & ~follow
         if k >= 20:
-            stuck |= np.hypot(*(pos - paths[:, k - 20]).T) < o.step
-        if stuck.any():
-            side = rng.choice([-1.0, 1.0], size=int(stuck.sum()))
-            perp = np.stack([-ug[stuck, 1], ug[stuck, 0]], axis=1) * side[:, None]
-            direction[stuck] = perp
+            stuck |= (np.hypot(*(pos - paths[:, k - 20]).T) < o.step) & ~follow
+        if world.count:
+            # a walker leaves the boundary once it is nearer the goal than where it got stuck
+            follow &= rg[:, 0] >= hit_d - 2.0 * o.step
+            start_follow = stuck & active
+            side[start_follow] = rng.choice([-1.0, 1.0], size=int(start_follow.sum()))
+            hit_d = np.where(start_follow, rg[:, 0], hit_d)
+            follow |= start_follow
+            if follow.any():
+                direction[follow] = _along_boundary(pos[follow], dx[follow], dy[follow],
+                                                    dc[follow], rho[follow], side[follow], o.step)
+        elif stuck.any():
+            perp = np.stack([-ug[stuck, 1], ug[stuck, 0]], axis=1)
+            direction[stuck] = perp * rng.choice([-1.0, 1.0], size=int(stuck.sum()))[:, None]
         step = np.minimum(o.step, rg[:, 0])
         new = pos + direction * step[:, None]
         if world.count:
@@ -104,6 +118,24 @@ def rollout(theta: np.ndarray, start: np.ndarray, goal: np.ndarray, world: World
         last = np.where(reached & ~arrived, k + 1, last)
         arrived |= reached
     return paths, arrived & alive, alive
+
+
+def _along_boundary(pos: np.ndarray, dx: np.ndarray, dy: np.ndarray, dc: np.ndarray,
+                    rho: np.ndarray, side: np.ndarray, step: float) -> np.ndarray:
+    """Unit steps along the nearest obstacle's edge, about one step off it (PROPOSED).
+
+    The escape of a walker caught in a local minimum (003's U shape, a wall
+    across the start-goal line): Bug-style boundary following, tangent to
+    the nearest inflated circle on the walker's side, pulled back towards
+    (or pushed off) the edge so that it keeps a distance of one step.
+    """
+    j = np.argmin(rho, axis=1)
+    rows = np.arange(len(pos))
+    n = np.stack([dx[rows, j], dy[rows, j]], axis=1) / np.maximum(dc[rows, j], 1e-9)[:, None]
+    tangent = np.stack([-n[:, 1], n[:, 0]], axis=1) * side[:, None]
+    pull = np.clip((rho[rows, j] - step) / step, -1.0, 1.0)[:, None]
+    d = tangent - 0.5 * pull * n
+    return d / np.maximum(np.hypot(d[:, 0], d[:, 1]), 1e-12)[:, None]
 
 
 def score(paths: np.ndarray, ok: np.ndarray, goal: np.ndarray, world: World, cruise: float,
