@@ -74,9 +74,10 @@ def test_bspline_never_shorter_than_the_polyline():
 
 
 def test_swept_corridor_covers_the_track():
+    """With a band that admits any meeting time, the corridor is the whole track."""
     w = World(np.array([0.0]), np.array([0.0]), np.array([1.0]), np.array([0.0]),
               np.array([2.0]), np.array([3.0]))
-    s = w.swept(10.0)
+    s = w.swept_window(np.array([0.0, 0.0]), 1.0, 10.0, slow=1e9, fast=1e9)
     assert not s.moving.any()
     for t in np.linspace(0.0, 10.0, 41):
         assert not s.points_free(np.array([[t, 0.0]]), 0.0)[0]

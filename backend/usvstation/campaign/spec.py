@@ -4,8 +4,8 @@ Required: `planners = [...]` (registry names), `families = [...]`
 (recovery, transit, dense, colregs, traps), `seeds = N` (seeds 1..N).
 Optional: `name` (default the file stem), `disturbances = [0.0, 0.2]`
 (current speeds in m/s, direction `current_dir_deg`, default [0.0]),
-`current_dir_deg = 0.0`, `hidden = 6` (seeded random recoveries beside the
-public suite), `dense_maps = 2` (seeded maps per 004 start/goal pair),
+`current_dir_deg = 0.0`, `hidden = 6` (seeded hidden scenarios per family
+beside the public ones, as in `bench compare`), `dense_maps = 2` (seeded maps per 004 start/goal pair),
 `options = { "rrt-star" = { iterations = 800 } }` (per-planner options).
 """
 

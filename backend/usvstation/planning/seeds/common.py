@@ -50,27 +50,6 @@ class World:
     def moving(self) -> np.ndarray:
         return (self.vx != 0.0) | (self.vy != 0.0)
 
-    def swept(self, horizon_s: float) -> World:
-        """Static circles covering each obstacle's track over [0, horizon] (swept corridor).
-
-        Used by planners whose paper knows only static obstacles: a moving
-        circle becomes a chain of static circles spaced at most its radius apart.
-        """
-        cx, cy, r, ri = [], [], [], []
-        for i in range(self.count):
-            travel = math.hypot(self.vx[i], self.vy[i]) * horizon_s
-            n = 1 + math.ceil(travel / max(self.radius[i], 0.5))
-            s = np.linspace(0.0, horizon_s, n)
-            cx.append(self.cx[i] + self.vx[i] * s)
-            cy.append(self.cy[i] + self.vy[i] * s)
-            r.append(np.full(n, self.radius[i]))
-            ri.append(np.full(n, self.inflated[i]))
-        if not cx:
-            return self
-        cxa, cya = np.concatenate(cx), np.concatenate(cy)
-        z = np.zeros_like(cxa)
-        return World(cxa, cya, z, z.copy(), np.concatenate(r), np.concatenate(ri))
-
     def swept_window(self, start: np.ndarray, cruise: float, horizon_s: float,
                      slow: float = 1.3, fast: float = 1.1) -> World:
         """Static corridors: each mover's track over [0, horizon] where the boat could meet it.

@@ -1,0 +1,42 @@
+"""`usv-station bench compare` end to end on a small cut: the JSON it promises, the tables."""
+
+import json
+
+from usvstation.cli import main
+
+
+def test_bench_compare_json_and_markdown(tmp_path, capsys):
+    rc = main(["bench", "compare", "--planners", "replan-ga,rrt-star", "--families",
+               "recovery,traps", "--seeds", "1", "--hidden", "1", "--hidden-from", "1003"])
+    assert rc == 0
+    out = capsys.readouterr()
+    result = json.loads(out.out)
+    assert "traps trap-hidden-1003-obstacle-on-line rrt-star seed 1: ok" in out.err
+    assert (result["seeds"], result["first_seed"], result["hidden"], result["hidden_from"]) == \
+        (1, 1, 1, 1003)
+    for planner in ("replan-ga", "rrt-star"):
+        for family, episodes in (("recovery", 5), ("traps", 4)):
+            e = result["summary"][planner][family]
+            assert e["episodes"] == episodes
+            assert e["public_success"] is not None and e["hidden_success"] is not None
+            assert e["track_mean_dev_m"] is not None and e["track_mean_dev_m"] >= 0.0
+    rows = result["rows"]
+    assert sum(r["hidden"] for r in rows) == 4  # one hidden scenario per family and planner
+    for r in rows:
+        if r["success"]:
+            assert r["track_max_dev_m"] >= r["track_mean_dev_m"] >= 0.0
+    assert {"vpf_over_rrt_length", "bspline_over_rrt_length", "paper"} <= set(result["table_004"])
+    assert {"p50_ms", "p99_ms"} <= set(result["replan_002"])
+    assert {"starboard_ok", "cases"} <= set(result["colregs_001"])
+
+    saved = tmp_path / "compare.json"
+    saved.write_text(out.out)
+    assert main(["bench", "compare", "--markdown", str(saved)]) == 0
+    table = capsys.readouterr().out
+    assert "| planner | family | episodes | success | public | hidden |" in table
+    assert "| rrt-star | traps | 4 |" in table
+
+
+def test_bench_compare_refuses_an_unknown_planner(capsys):
+    assert main(["bench", "compare", "--planners", "rrt", "--families", "traps"]) == 2
+    assert "planners: unknown planner 'rrt'; available: iga, colregs-ga" in capsys.readouterr().err
