@@ -39,13 +39,14 @@ def write_plots(rows: list[dict[str, Any]], folder: Path,
         fig.savefig(path, format="svg")
         plt.close(fig)
         written.append(str(path))
-    for metric in ("normalization_index", "plan_time_ms"):
+    for metric in ("normalization_index", "plan_time_ms", "track_mean_dev_m"):
         fams = sorted({r["family"] for r in rows})
         fig, axes = plt.subplots(1, len(fams), figsize=(4 * len(fams), 4), squeeze=False)
         for ax, fam in zip(axes[0], fams, strict=True):
             pls = sorted({r["planner"] for r in rows if r["family"] == fam})
             data = [[r[metric] for r in rows if r["family"] == fam and r["planner"] == p
-                     and r["success"]] or [float("nan")] for p in pls]
+                     and r["success"] and r.get(metric) is not None] or [float("nan")]
+                    for p in pls]
             ax.boxplot(data)
             ax.set_xticks(range(1, len(pls) + 1), pls, rotation=60, fontsize=7)
             ax.set_title(f"{fam}: {metric}")
