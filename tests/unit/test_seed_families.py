@@ -103,3 +103,27 @@ def test_hidden_scenarios_are_seeded_distinct_and_valid():
     assert all(n.startswith("colregs-hidden-") for n in names[8:]) and len(names) == 11
     assert [s.name for s in family_scenarios("traps", hidden=2, hidden_from=7)][3:] == [
         trap_hidden(7).name, trap_hidden(8).name]
+
+
+def test_a_mover_crossing_the_run_in_at_arrival_is_passed_at_another_speed():
+    """random-recovery-1001: a vessel reaches the ramp approach when the boat would at its
+    start speed; a static-only planner cannot see that, its second attempt sails 1.3x faster."""
+    from usvstation.bench.scenarios import random_recovery
+
+    sc = random_recovery(1001)
+    plan = plan_with(sc, "rrt-star", 1)
+    assert plan_violations(plan, sc) == []
+    assert plan["metrics"]["attempts"] == 2
+
+
+def test_a_route_turning_too_far_from_the_start_heading_gets_a_lead_in():
+    """random-recovery-1004 under way at 0.64 m/s: DE-APF's walk leaves 96 degrees off the
+    heading; a lead-in along the heading keeps the first turn within the limit."""
+    from usvstation.bench.scenarios import random_recovery
+    from usvstation.planning.validate import first_turn_deg
+
+    sc = random_recovery(1004)
+    assert sc.start.speed >= 0.5
+    plan = plan_with(sc, "de-apf", 2)
+    assert plan_violations(plan, sc) == []
+    assert first_turn_deg(plan, sc) <= sc.vessel.turn_max_deg

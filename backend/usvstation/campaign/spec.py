@@ -5,7 +5,8 @@ Required: `planners = [...]` (registry names), `families = [...]`
 Optional: `name` (default the file stem), `disturbances = [0.0, 0.2]`
 (current speeds in m/s, direction `current_dir_deg`, default [0.0]),
 `current_dir_deg = 0.0`, `hidden = 6` (seeded hidden scenarios per family
-beside the public ones, as in `bench compare`), `dense_maps = 2` (seeded maps per 004 start/goal pair),
+beside the public ones, as in `bench compare`), `dense_maps = 2` (seeded maps
+per 004 start/goal pair),
 `options = { "rrt-star" = { iterations = 800 } }` (per-planner options).
 """
 

@@ -12,6 +12,7 @@ pydantic options model, and one `PlannerInfo` entry in `PLANNERS`.
 
 from __future__ import annotations
 
+import math
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -20,7 +21,7 @@ from typing import Any
 import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
-from usvstation.geometry import inflated_radius
+from usvstation.geometry import angle_diff, inflated_radius
 from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.planning.seeds.common import (
     World,
@@ -28,7 +29,7 @@ from usvstation.planning.seeds.common import (
     finish_plan,
     recovery_gates,
 )
-from usvstation.planning.validate import plan_violations
+from usvstation.planning.validate import MOVING_START_SPEED, current_vector, plan_violations
 from usvstation.scenario import Scenario
 
 MOVING = "moving-obstacles"
@@ -91,9 +92,13 @@ def _drive(scenario: Scenario, seed: int, opts: SeedOptions, name: str,
     last: str = "no path found"
     full = World.from_scenario(scenario, margins[0])
     gates = recovery_gates(scenario, full) if scenario.kind == "recovery" else [None]
+    base_cruise = cruise
     for attempt in range(opts.attempts):
         margin = margins[0] if attempt < max(1, opts.attempts // 2) or opts.attempts == 1 \
             else margins[1]
+        # another speed shifts every meeting in time: a way past a mover that crosses the
+        # run-in at the boat's arrival, which a static-only method cannot see (PROPOSED)
+        cruise = cruise_speed(scenario, base_cruise * SPEED_TRIES[attempt % len(SPEED_TRIES)])
         world = World.from_scenario(scenario, margin)
         gate = gates[attempt % len(gates)]
         target = np.array([scenario.goal.x, scenario.goal.y]) if gate is None else gate
@@ -114,6 +119,27 @@ def _drive(scenario: Scenario, seed: int, opts: SeedOptions, name: str,
     raise NoFeasiblePlan(f"no feasible plan: {name}: {last}")
 
 
+SPEED_TRIES = (1.0, 1.3, 0.75, 1.0)  # cruise speed factor of attempt k (mod 4)
+
+
+def _with_lead_in(scenario: Scenario, route: np.ndarray, length: float) -> np.ndarray:
+    """The route with a first leg along the start heading when it would otherwise turn more
+    than the vessel's limit from it at the start (a boat under way; issue 12's first-turn rule).
+    The leg's course is the heading's, set by the current (so that the hull keeps its heading);
+    the turn-limit pass then rounds the corner at its end."""
+    v, st = scenario.vessel, scenario.start
+    if st.speed < MOVING_START_SPEED or len(route) < 2:
+        return route
+    h = math.radians(st.heading_deg)
+    cx, cy = current_vector(scenario)
+    course = math.atan2(st.speed * math.sin(h) + cy, st.speed * math.cos(h) + cx)
+    first = math.atan2(route[1][1] - route[0][1], route[1][0] - route[0][0])
+    if abs(math.degrees(angle_diff(first, course))) <= v.turn_max_deg - 0.5:
+        return route
+    lead = route[0] + length * np.array([math.cos(course), math.sin(course)])
+    return np.vstack([route[:1], lead[None], route[1:]])
+
+
 def _obstacle_models(scenario: Scenario, world: World, target: np.ndarray, cruise: float,
                      static_only: bool) -> list[tuple[str, World]]:
     """The obstacle models to try in turn: swept corridors first for a static-only planner."""
@@ -130,21 +156,27 @@ def _finish_attempt(scenario: Scenario, route: np.ndarray, extra: Any, gate: np.
                     last: str) -> tuple[dict[str, Any] | None, str]:
     """The plan of one route (run-in appended, checked), or None and the checker's reason."""
     speeds = None
+    routes = [route]
     if speeds_from is not None and "speeds" in speeds_from:
         speeds = np.asarray(speeds_from["speeds"], float)
+    else:  # a long lead-in first, a short one if the long one meets an obstacle
+        routes = [_with_lead_in(scenario, route, k * opts.corner_cut_m) for k in (2.0, 0.5)]
     if gate is not None:
-        route = np.vstack([route, [[0.0, 0.0]]])
+        routes = [np.vstack([r, [[0.0, 0.0]]]) for r in routes]
         if speeds is not None:
             speeds = np.append(speeds, speeds[-1])
-    try:
-        plan = finish_plan(scenario, route, name, seed, cruise, time.perf_counter() - t0,
-                           {**(extra or {}), "attempts": attempt + 1,
-                            "inflation_m": round(margin, 6), "obstacle_model": model},
-                           cut=opts.corner_cut_m, speeds=speeds)
-    except NoFeasiblePlan as exc:
-        return None, str(exc).removeprefix("no feasible plan: ").removeprefix(f"{name}: ")
-    plan["metrics"]["elapsed_s"] = round(time.perf_counter() - t0, 6)
-    return plan, last
+    for candidate in routes:
+        try:
+            plan = finish_plan(scenario, candidate, name, seed, cruise, time.perf_counter() - t0,
+                               {**(extra or {}), "attempts": attempt + 1,
+                                "inflation_m": round(margin, 6), "obstacle_model": model},
+                               cut=opts.corner_cut_m, speeds=speeds)
+        except NoFeasiblePlan as exc:
+            last = str(exc).removeprefix("no feasible plan: ").removeprefix(f"{name}: ")
+            continue
+        plan["metrics"]["elapsed_s"] = round(time.perf_counter() - t0, 6)
+        return plan, last
+    return None, last
 
 
 def _bounds(scenario: Scenario, target: np.ndarray, pad: float | None = None
