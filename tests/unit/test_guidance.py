@@ -78,12 +78,20 @@ def test_circle_segment_intersection_count_matches_the_geometry(cx, cy, r, ax, a
     s = project_on_segment(cx, cy, ax, ay, bx, by)
     nearest = math.hypot(ax + s * (bx - ax) - cx, ay + s * (by - ay) - cy)
     margin = 1e-6 * max(1.0, r)
-    if (da < r - margin) != (db < r - margin):
-        assert len(hits) == 1  # one end inside: exactly one crossing
+    inside_a, inside_b = da < r - margin, db < r - margin
+    outside_a, outside_b = da > r + margin, db > r + margin
+    if (inside_a and outside_b) or (inside_b and outside_a):
+        assert len(hits) == 1  # one end inside, the other outside: exactly one crossing
     elif da > r + margin and db > r + margin and nearest < r - margin:
         assert len(hits) == 2  # both ends outside, the segment cuts through
     elif nearest > r + margin or max(da, db) < r - margin:
         assert hits == []  # misses, or lies wholly inside
+
+
+def test_an_end_a_hair_inside_the_circle_is_inside() -> None:
+    """Hypothesis found it: both ends inside, one by 6e-8 m, so no crossing (the test used
+    to call that end outside)."""
+    assert circle_segment_intersections(0.0, 5.960464477539063e-08, 1.0, 0.0, 0.0, 0.0, 1.0) == []
 
 
 def test_circle_segment_exact_cases() -> None:
