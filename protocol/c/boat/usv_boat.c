@@ -347,12 +347,16 @@ static void fill_state(usv_boat_t *b, mavlink_usv_mission_state_t *s)
     s->station_session = b->station_session;
 }
 
+static void swap_if_due(usv_boat_t *b, uint32_t now);
+
 static void send_state(usv_boat_t *b)
 {
     mavlink_usv_mission_state_t s;
+    uint32_t at = uptime(b);
+    swap_if_due(b, at); /* a report stamped at or after the swap instant shows the swap */
     fill_state(b, &s);
     b->last_state = s;
-    s.uptime_ms = uptime(b);
+    s.uptime_ms = at;
     s.rejected = b->rejected;
     SEND(usv_mission_state, &s);
 }
@@ -1220,6 +1224,37 @@ static void track(usv_boat_t *b, uint32_t now)
     steer(b, atan2f(ve, vn), clampf(sqrtf(vn * vn + ve * ve), 0.0f, b->cfg.max_speed_mps));
 }
 
+/* hot swap at the instant on the boat clock: a verified staged mission becomes the active
+ * one once `now` reaches its instant (dropped if the boat is not running then) */
+static void swap_if_due(usv_boat_t *b, uint32_t now)
+{
+    text_t t;
+    if (b->staging == USV_STAGING_VERIFIED && at_or_after(now, b->staged_swap_at)) {
+        uint32_t at = b->staged_swap_at;
+        if (b->state == USV_BOAT_STATE_RUNNING) {
+            b->active ^= 1u;
+            b->staging = USV_STAGING_NONE;
+            b->staged_received = 0;
+            b->staged_swap_at = 0;
+            b->t0_ms = at; /* item times count from the swap instant */
+            b->current_seq = 0;
+            b->guidance_on = 0;
+            text_begin(&t, "swapped to mission ");
+            tx_uint(&t, active_mission(b)->id);
+            tx_str(&t, " at ");
+            tx_uint(&t, at);
+            tx_str(&t, " ms");
+            send_text(b, MAV_SEVERITY_INFO, &t);
+        } else {
+            text_begin(&t, "swap to ");
+            tx_uint(&t, staged_mission(b)->id);
+            tx_str(&t, " dropped: not running at the instant");
+            drop_staging(b);
+            send_text(b, MAV_SEVERITY_WARNING, &t);
+        }
+    }
+}
+
 static void tick(usv_boat_t *b, uint32_t now)
 {
     text_t t;
@@ -1251,31 +1286,7 @@ static void tick(usv_boat_t *b, uint32_t now)
         drop_staging(b);
         send_text(b, MAV_SEVERITY_WARNING, &t);
     }
-    /* hot swap at the instant on the boat clock */
-    if (b->staging == USV_STAGING_VERIFIED && at_or_after(now, b->staged_swap_at)) {
-        uint32_t at = b->staged_swap_at;
-        if (b->state == USV_BOAT_STATE_RUNNING) {
-            b->active ^= 1u;
-            b->staging = USV_STAGING_NONE;
-            b->staged_received = 0;
-            b->staged_swap_at = 0;
-            b->t0_ms = at; /* item times count from the swap instant */
-            b->current_seq = 0;
-            b->guidance_on = 0;
-            text_begin(&t, "swapped to mission ");
-            tx_uint(&t, active_mission(b)->id);
-            tx_str(&t, " at ");
-            tx_uint(&t, at);
-            tx_str(&t, " ms");
-            send_text(b, MAV_SEVERITY_INFO, &t);
-        } else {
-            text_begin(&t, "swap to ");
-            tx_uint(&t, staged_mission(b)->id);
-            tx_str(&t, " dropped: not running at the instant");
-            drop_staging(b);
-            send_text(b, MAV_SEVERITY_WARNING, &t);
-        }
-    }
+    swap_if_due(b, now);
     switch (b->state) {
     case USV_BOAT_STATE_RUNNING:
         track(b, now);
