@@ -322,12 +322,13 @@ def run_compare(planners: list[str] | None = None, families: list[str] | None = 
     families = families or list(FAMILIES)
     rows = []
     for fam in families:
-        public = {sc.name for sc in family_scenarios(fam, 0, dense_maps)}
-        for sc in family_scenarios(fam, hidden, dense_maps, hidden_from):
+        scenarios = family_scenarios(fam, hidden, dense_maps, hidden_from)
+        n_public = len(scenarios) - hidden  # the hidden ones come last
+        for k, sc in enumerate(scenarios):
             for pl in planners:
                 for seed in range(first_seed, first_seed + seeds):
                     row = evaluate(sc, fam, pl, seed, track=track and seed == first_seed)
-                    row["hidden"] = sc.name not in public
+                    row["hidden"] = k >= n_public
                     rows.append(row)
                     if progress:
                         progress(f"{fam} {sc.name} {pl} seed {seed}: "

@@ -122,20 +122,26 @@ def _drive(scenario: Scenario, seed: int, opts: SeedOptions, name: str,
 SPEED_TRIES = (1.0, 1.3, 0.75, 1.0)  # cruise speed factor of attempt k (mod 4)
 
 
-def _with_lead_in(scenario: Scenario, route: np.ndarray, length: float) -> np.ndarray:
-    """The route with a first leg along the start heading when it would otherwise turn more
-    than the vessel's limit from it at the start (a boat under way; issue 12's first-turn rule).
-    The leg's course is the heading's, set by the current (so that the hull keeps its heading);
-    the turn-limit pass then rounds the corner at its end."""
+def _lead_in_course(scenario: Scenario, route: np.ndarray) -> float | None:
+    """Course of a first leg along the start heading, or None when the route needs none.
+
+    A boat under way may turn at most its limit from the start heading onto the first leg
+    (issue 12's first-turn rule). The lead-in's course is the heading's, set by the current
+    (so that the hull keeps its heading); the turn-limit pass then rounds the corner at its end.
+    """
     v, st = scenario.vessel, scenario.start
     if st.speed < MOVING_START_SPEED or len(route) < 2:
-        return route
+        return None
     h = math.radians(st.heading_deg)
     cx, cy = current_vector(scenario)
     course = math.atan2(st.speed * math.sin(h) + cy, st.speed * math.cos(h) + cx)
     first = math.atan2(route[1][1] - route[0][1], route[1][0] - route[0][0])
     if abs(math.degrees(angle_diff(first, course))) <= v.turn_max_deg - 0.5:
-        return route
+        return None
+    return course
+
+
+def _with_lead_in(route: np.ndarray, course: float, length: float) -> np.ndarray:
     lead = route[0] + length * np.array([math.cos(course), math.sin(course)])
     return np.vstack([route[:1], lead[None], route[1:]])
 
@@ -159,8 +165,9 @@ def _finish_attempt(scenario: Scenario, route: np.ndarray, extra: Any, gate: np.
     routes = [route]
     if speeds_from is not None and "speeds" in speeds_from:
         speeds = np.asarray(speeds_from["speeds"], float)
-    else:  # a long lead-in first, a short one if the long one meets an obstacle
-        routes = [_with_lead_in(scenario, route, k * opts.corner_cut_m) for k in (2.0, 0.5)]
+    elif (course := _lead_in_course(scenario, route)) is not None:
+        # a long lead-in first, a short one if the long one meets an obstacle
+        routes = [_with_lead_in(route, course, k * opts.corner_cut_m) for k in (2.0, 0.5)]
     if gate is not None:
         routes = [np.vstack([r, [[0.0, 0.0]]]) for r in routes]
         if speeds is not None:
