@@ -52,8 +52,8 @@ class PathBatch:
     def __len__(self) -> int:
         return int(self.x.shape[0])
 
-    def rows(self, sel: slice) -> PathBatch:
-        """The paths of rows `sel`."""
+    def rows(self, sel: slice | np.ndarray) -> PathBatch:
+        """The paths of rows `sel` (a slice or an index array)."""
         return PathBatch(*(getattr(self, f)[sel] for f in (
             "x", "y", "v", "t", "seg_len", "seg_dt", "seg_dx", "seg_dy")))
 

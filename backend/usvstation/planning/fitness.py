@@ -88,17 +88,18 @@ def first_turn(paths: PathBatch, problem: Problem) -> np.ndarray:
 
 def water_speed_bad(dx: Num, dy: Num, v0: Num, v1: Num, problem: Problem) -> np.ndarray:
     """True where a segment's speed through the water (ground velocity minus current) leaves
-    [speed_min, speed_max] at either end, or the hull would make way astern (issue 12)."""
+    [speed_min, speed_max] at either end, or the hull would make way astern (issue 12).
+
+    With u the unit course and c the current, the water velocity is v u - c:
+    |v u - c|^2 = v (v - 2 u.c) + |c|^2, and its component along u is v - u.c.
+    """
     cx, cy = problem.current
-    n = np.maximum(np.hypot(dx, dy), _EPS)
-    ux, uy = dx / n, dy / n
-    bad = np.zeros(np.broadcast_shapes(np.shape(ux), np.shape(v0), np.shape(v1)), dtype=bool)
-    for v in (v0, v1):
-        wx, wy = v * ux - cx, v * uy - cy
-        w2 = wx * wx + wy * wy
-        bad |= (w2 < (problem.speed_min * (1 - 1e-6)) ** 2) | (
-            w2 > (problem.speed_max * (1 + 1e-6)) ** 2) | (wx * ux + wy * uy <= 0.0)
-    return bad
+    along = (dx * cx + dy * cy) / np.maximum(np.hypot(dx, dy), _EPS)
+    c2 = cx * cx + cy * cy
+    lo2, hi2 = (problem.speed_min * (1 - 1e-6)) ** 2, (problem.speed_max * (1 + 1e-6)) ** 2
+    w0, w1 = v0 * (v0 - 2.0 * along) + c2, v1 * (v1 - 2.0 * along) + c2
+    return ((w0 < lo2) | (w0 > hi2) | (v0 <= along) | (w1 < lo2) | (w1 > hi2)
+            | (v1 <= along))
 
 
 def collision_matrix(paths: PathBatch, problem: Problem) -> np.ndarray:
@@ -176,10 +177,10 @@ class Evaluator:
         keep = np.flatnonzero((ox_hi >= xlo) & (ox_lo <= xhi) & (oy_hi >= ylo) & (oy_lo <= yhi))
         return seg[keep], keep
 
-    def __call__(self, paths: PathBatch) -> Evaluation:
-        """Gates, terms and fitness (eq. 12, or the EG3 linear penalty) of every path."""
-        problem, opts = self.problem, self.opts
-        turns = turn_angles(segment_headings(paths))
+    def _gate_counts(self, paths: PathBatch, turns: np.ndarray,
+                     ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Violated acceleration, speed and turn constraints per path (every gate but G_col)."""
+        problem = self.problem
         v2 = paths.v * paths.v
         # |dv| / dT <= a_max with dT = 2 L / (v0 + v1)  <=>  |v1^2 - v0^2| <= 2 a_max L
         acc_bad = np.abs(v2[:, 1:] - v2[:, :-1]) > (2.0 * problem.accel_max * (1.0 + _EPS)) * (
@@ -193,33 +194,59 @@ class Evaluator:
         if problem.current != (0.0, 0.0):
             vel_bad = np.column_stack([vel_bad, water_speed_bad(
                 paths.seg_dx, paths.seg_dy, paths.v[:, :-1], paths.v[:, 1:], problem)])
-        n_col = self.collisions(paths)
+        return acc_bad.sum(axis=1), vel_bad.sum(axis=1), turn_bad.sum(axis=1)
 
-        n = paths.x.shape[1]
-        fit_d = paths.seg_len.sum(axis=1) / self.distance
-        fit_t = paths.t[:, -1] / (n - 1)
-        fit_ang = turns.sum(axis=1) / np.pi
+    def _terms(self, paths: PathBatch, turns: np.ndarray) -> dict[str, np.ndarray]:
+        """The four terms of eq. 12, raw and normalised, per path."""
+        n, dist = paths.x.shape[1], self.distance
         fit_mal = np.abs(paths.y).sum(axis=1) / n
-        dist = self.distance
-        fit_t_norm = paths.t[:, -1] * problem.speed_max / dist
-        fit_mal_norm = fit_mal / dist
-        t_term, mal_term = (fit_t_norm, fit_mal_norm) if opts.terms == "normalised" \
-            else (fit_t, fit_mal)
-        n_acc, n_vel, n_turn = acc_bad.sum(axis=1), vel_bad.sum(axis=1), turn_bad.sum(axis=1)
-        g_acc, g_vel, g_col, g_turn = n_acc == 0, n_vel == 0, n_col == 0, n_turn == 0
-        violations = n_acc + n_vel + n_turn + n_col
+        return {
+            "fit_d": paths.seg_len.sum(axis=1) / dist, "fit_t": paths.t[:, -1] / (n - 1),
+            "fit_ang": turns.sum(axis=1) / np.pi, "fit_mal": fit_mal,
+            "fit_t_norm": paths.t[:, -1] * self.problem.speed_max / dist,
+            "fit_mal_norm": fit_mal / dist,
+        }
 
-        if opts.fitness == "linear":
-            fitness = _linear_penalty(fit_d, violations, opts)
+    def _eq12(self, terms: dict[str, np.ndarray], feasible: np.ndarray) -> np.ndarray:
+        """Eq. 12: A over the weighted terms where every gate holds, else 0."""
+        opts = self.opts
+        normalised = opts.terms == "normalised"
+        t_term = terms["fit_t_norm"] if normalised else terms["fit_t"]
+        mal_term = terms["fit_mal_norm"] if normalised else terms["fit_mal"]
+        d = opts.weight_d if self.problem.recovery else 0.0
+        denom = opts.weight_a * terms["fit_d"] + opts.weight_b * t_term
+        denom += opts.weight_c * terms["fit_ang"]
+        denom += d * mal_term
+        return np.where(feasible, opts.scale_A / denom, 0.0)
+
+    def fitness(self, paths: PathBatch) -> np.ndarray:
+        """The GA's inner loop: `self(paths).fitness`, the same values, with the collision
+        test (the costly gate) run only on the paths that pass every other gate."""
+        if self.opts.fitness == "linear":
+            return self(paths).fitness
+        turns = turn_angles(segment_headings(paths))
+        n_acc, n_vel, n_turn = self._gate_counts(paths, turns)
+        feasible = (n_acc + n_vel + n_turn) == 0
+        rows = np.flatnonzero(feasible)
+        if rows.size and self.problem.obstacles.count:
+            sub = paths if rows.size == len(paths) else paths.rows(rows)
+            feasible[rows] = self.collisions(sub) == 0
+        return self._eq12(self._terms(paths, turns), feasible)
+
+    def __call__(self, paths: PathBatch) -> Evaluation:
+        """Gates, terms and fitness (eq. 12, or the EG3 linear penalty) of every path."""
+        turns = turn_angles(segment_headings(paths))
+        n_acc, n_vel, n_turn = self._gate_counts(paths, turns)
+        n_col = self.collisions(paths)
+        terms = self._terms(paths, turns)
+        violations = n_acc + n_vel + n_turn + n_col
+        if self.opts.fitness == "linear":
+            fitness = _linear_penalty(terms["fit_d"], violations, self.opts)
         else:
-            d = opts.weight_d if problem.recovery else 0.0
-            denom = opts.weight_a * fit_d + opts.weight_b * t_term + opts.weight_c * fit_ang
-            denom += d * mal_term
-            fitness = np.where(violations == 0, opts.scale_A / denom, 0.0)
+            fitness = self._eq12(terms, violations == 0)
         return Evaluation(
-            fitness=fitness, fit_d=fit_d, fit_t=fit_t, fit_ang=fit_ang, fit_mal=fit_mal,
-            fit_t_norm=fit_t_norm, fit_mal_norm=fit_mal_norm,
-            g_acc=g_acc, g_vel=g_vel, g_col=g_col, g_turn=g_turn, violations=violations,
+            fitness=fitness, **terms, g_acc=n_acc == 0, g_vel=n_vel == 0, g_col=n_col == 0,
+            g_turn=n_turn == 0, violations=violations,
         )
 
 

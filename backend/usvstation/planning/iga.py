@@ -91,7 +91,7 @@ def run_iga(
         out = np.zeros(codes.shape[0])
         for k in range(0, codes.shape[0], EVAL_CHUNK):
             part = codes[k:k + EVAL_CHUNK]
-            out[k:k + part.shape[0]] = evaluator(layout.decode_codes(part)).fitness
+            out[k:k + part.shape[0]] = evaluator.fitness(layout.decode_codes(part))
             evaluations += part.shape[0]
             if k + EVAL_CHUNK < codes.shape[0] and expired():
                 return out, False

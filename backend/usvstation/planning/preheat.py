@@ -350,14 +350,14 @@ class _Grower:
 def _near_box(obs: _Obstacles, px: Num, py: Num, pt: Num, x: Num, y: Num, t: Num) -> _Obstacles:
     """The obstacles whose circle, swept over the draw's time window, reaches the box that
     all candidate segments of the draw span (x-y-t pruning; exact, never drops a hit)."""
-    xlo, xhi = min(np.min(px), np.min(x)), max(np.max(px), np.max(x))
-    ylo, yhi = min(np.min(py), np.min(y)), max(np.max(py), np.max(y))
-    tlo, thi = float(np.min(pt)), float(np.max(t))
+    lo, hi = np.minimum.reduce, np.maximum.reduce  # ufunc reductions: no wrapper overhead
+    xlo, xhi = min(lo(px, None), lo(x, None)), max(hi(px, None), hi(x, None))
+    ylo, yhi = min(lo(py, None), lo(y, None)), max(hi(py, None), hi(y, None))
+    tlo, thi = lo(pt, None), hi(t, None)
     cx, cy, vx, vy, r = (a[:, 0, 0] for a in (obs.cx, obs.cy, obs.vx, obs.vy, obs.r))
-    keep = ((cx + np.maximum(vx * tlo, vx * thi) + r >= xlo)
-            & (cx + np.minimum(vx * tlo, vx * thi) - r <= xhi)
-            & (cy + np.maximum(vy * tlo, vy * thi) + r >= ylo)
-            & (cy + np.minimum(vy * tlo, vy * thi) - r <= yhi))
+    sx0, sx1, sy0, sy1 = vx * tlo, vx * thi, vy * tlo, vy * thi
+    keep = ((cx + np.maximum(sx0, sx1) + r >= xlo) & (cx + np.minimum(sx0, sx1) - r <= xhi)
+            & (cy + np.maximum(sy0, sy1) + r >= ylo) & (cy + np.minimum(sy0, sy1) - r <= yhi))
     if keep.all():
         return obs
     return _Obstacles(obs.index[keep], obs.cx[keep], obs.cy[keep], obs.vx[keep], obs.vy[keep],
