@@ -162,15 +162,15 @@ def _foundation(
     if not opts.preheat:
         empty = np.zeros((0, layout.n_genes), dtype=np.int64)
         return random_levels(layout, rng, pop_n), empty, PreheatReport()
-    grown, ok, report = preheat(layout, problem, opts, rng, (3 * pop_n) // 2, need=pop_n,
+    grown, ok, report = preheat(layout, problem, opts, rng, 2 * pop_n, need=pop_n,
                                 expired=expired)
     if ok.sum() < max(4, pop_n // 4) and not (expired and expired()):
         # hard problem: one more round with many more candidates and draws per waypoint
         harder = opts.model_copy(update={
             "candidates": 4 * opts.candidates, "preheat_retries": 4 * opts.preheat_retries,
         })
-        more, ok_more, rep = preheat(layout, problem, harder, rng, 2 * pop_n, need=pop_n,
-                                     expired=expired)
+        more, ok_more, rep = preheat(layout, problem, harder, rng, pop_n,
+                                     need=max(4, pop_n // 4) - int(ok.sum()), expired=expired)
         report.merge(rep)
         grown, ok = np.vstack([grown, more]), np.concatenate([ok, ok_more])
     grown = grown[ok]

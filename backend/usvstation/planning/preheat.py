@@ -313,9 +313,9 @@ class _Grower:
                      pt: Num, x: Num, y: Num, t: Num) -> np.ndarray:
         """Candidates (n, C) tested only against the obstacles that reach the box of their
         own individual's segments over its time window, in memory-bounded passes."""
-        def per_row(a: Num, reduce: np.ufunc) -> np.ndarray:
-            width = np.shape(a)[-1] if np.ndim(a) else 1
-            return reduce.reduce(np.broadcast_to(a, (shape[0], width)), axis=1)
+        def per_row(a: Num, reduce: np.ufunc) -> Num:
+            """Per individual: a (n, w) row reduced, or a scalar as it is (it broadcasts)."""
+            return reduce.reduce(a, axis=1) if np.ndim(a) else a
 
         xlo = np.minimum(per_row(px, np.minimum), per_row(x, np.minimum))
         xhi = np.maximum(per_row(px, np.maximum), per_row(x, np.maximum))

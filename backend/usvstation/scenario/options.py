@@ -36,11 +36,11 @@ class IGAOptions(BaseModel):
         None, gt=0.0, le=1e9, description="stop once the best fitness reaches this value"
     )
     stall_generations: int = Field(
-        10, ge=1, le=5000,
+        8, ge=1, le=5000,
         description="converged when the best fitness stalls this many generations",
     )
     stall_tolerance: float = Field(
-        3e-3, ge=0.0, le=1.0, description="relative gain counted as progress"
+        5e-3, ge=0.0, le=1.0, description="relative gain counted as progress"
     )
 
     # encoding (eq. 10-11): widths grow to cover the scenario
