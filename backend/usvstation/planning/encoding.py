@@ -184,7 +184,8 @@ class GeneLayout:
     def clip_levels(self, levels: np.ndarray) -> np.ndarray:
         """Clip levels (in place) into each gene's admissible range; the cone gene's
         range depends on the waypoint's x."""
-        np.clip(levels, 0, self.gene_count - 1, out=levels)
+        np.maximum(levels, 0, out=levels)  # np.clip, without its wrapper's overhead
+        np.minimum(levels, self.gene_count - 1, out=levels)
         if self.cone_tan is not None:
             g = self.cone_gene
             top = 2 * self.cone_half_levels(levels[:, g - 1])

@@ -196,6 +196,24 @@ class Evaluator:
                 paths.seg_dx, paths.seg_dy, paths.v[:, :-1], paths.v[:, 1:], problem)])
         return acc_bad.sum(axis=1), vel_bad.sum(axis=1), turn_bad.sum(axis=1)
 
+    def _gate_any(self, paths: PathBatch, turns: np.ndarray) -> np.ndarray:
+        """True where any gate but G_col fails: `_gate_counts` reduced to one flag per path."""
+        problem = self.problem
+        v2 = paths.v * paths.v
+        bad = np.abs(v2[:, 1:] - v2[:, :-1]) > (2.0 * problem.accel_max * (1.0 + _EPS)) * (
+            paths.seg_len + _EPS)
+        bad |= paths.seg_len <= _EPS
+        if problem.current != (0.0, 0.0):
+            bad |= water_speed_bad(paths.seg_dx, paths.seg_dy, paths.v[:, :-1], paths.v[:, 1:],
+                                   problem)
+        out = bad.any(axis=1)
+        out |= (turns > problem.turn_max + _EPS).any(axis=1)
+        out |= ((paths.v < problem.speed_min - _EPS) | (paths.v > problem.speed_max + _EPS)
+                ).any(axis=1)
+        if problem.start_heading is not None:
+            out |= first_turn(paths, problem) > problem.turn_max
+        return out
+
     def _terms(self, paths: PathBatch, turns: np.ndarray) -> dict[str, np.ndarray]:
         """The four terms of eq. 12, raw and normalised, per path."""
         n, dist = paths.x.shape[1], self.distance
@@ -225,8 +243,7 @@ class Evaluator:
         if self.opts.fitness == "linear":
             return self(paths).fitness
         turns = turn_angles(segment_headings(paths))
-        n_acc, n_vel, n_turn = self._gate_counts(paths, turns)
-        feasible = (n_acc + n_vel + n_turn) == 0
+        feasible = ~self._gate_any(paths, turns)
         rows = np.flatnonzero(feasible)
         if rows.size and self.problem.obstacles.count:
             sub = paths if rows.size == len(paths) else paths.rows(rows)
