@@ -73,6 +73,8 @@ def run_planner_bench(
         ablation_rows.append(bench_ablations(scenario, ablation_seeds))
         progress(f"DEAP and pymoo baselines on {scenario.name}")
         out["baseline"]["runs"].extend(bench_deap(scenario, deap_seeds, deap_max))
+    every = [ms for s in out["scenarios"] for ms in s["plan_time_ms"]]
+    out["suite_plan_time_ms_median"] = round(statistics.median(every), 2)  # all scenarios, seeds
     out["ablation"].update(ablation_tables(ablation_rows))
     out["baseline"]["summary"] = baseline_summary(out["baseline"]["runs"])
     if random_count > 0:
@@ -442,6 +444,9 @@ def render_markdown(r: dict[str, Any]) -> str:
             f"{s['fitness']} | {s['fit_d']} | {s['fit_t']} | {s['fit_ang']} | {s['fit_mal']} | "
             f"{s['length_m']} | {s['duration_s']} | {s['min_clearance_m']} | {s['generations']} |"
         )
+    if "suite_plan_time_ms_median" in r:
+        lines += ["", f"Median plan time over the whole suite (every scenario and seed): "
+                      f"{r['suite_plan_time_ms_median']} ms."]
     ab = r["ablation"]
     lines += ["", f"Ablations (means over seeds {ab['seeds']}). Table 2 form (IGA vs EG3):", "",
               "| case | Fit_ang IGA | Fit_ang EG3 | Fit_mal IGA | Fit_mal EG3 | EG3 valid |",
