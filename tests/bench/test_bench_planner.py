@@ -15,7 +15,8 @@ def test_quick_planner_bench(tmp_path):
     (row,) = out["scenarios"]
     assert row["scenario"] == "case3" and row["valid"] == 2 and len(row["plan_time_ms"]) == 2
     assert row["plan_time_ms_median"] > 0
-    assert out["suite_plan_time_ms_median"] == row["plan_time_ms_median"]  # one scenario here
+    # one scenario here; the suite median is taken over the rounded per-seed times
+    assert abs(out["suite_plan_time_ms_median"] - row["plan_time_ms_median"]) <= 0.01
     for key in ("fit_d", "fit_t", "fit_ang", "fit_mal", "length_m", "duration_s",
                 "min_clearance_m", "generations"):
         assert row[key] is not None
