@@ -185,8 +185,8 @@ class MonitorService:
         boat = BoatState(float(bx), float(by), float(rvx), float(rvy),
                          float(row["boat_time"]) - self.t0,
                          float(frame.compass_to_heading_deg(row["heading_deg"])))
-        targets = [TargetState(v.id, v.x, v.y, v.rvx, v.rvy, v.radius,
-                               known=v.source == "manual")
+        targets = [TargetState(v["id"], v["x"], v["y"], v["rvx"], v["rvy"], v["radius"],
+                               known=v["source"] == "manual")
                    for v in self.world.world.targets(now)]
         a = assess(self.waypoints, boat, targets, self.scenario.vessel.length, self.config,
                    (float(fvx), float(fvy)))
