@@ -47,14 +47,20 @@ def offset_geodetic(lat: float, lon: float, east: float, north: float) -> tuple[
 
 
 @dataclass(frozen=True)
-class OwnShipReport:
-    """A partial own-ship report (GGA: position; HDT: heading; VTG: course, speed)."""
+class MotionReport:
+    """A ship's position (WGS-84) and motion (compass degrees, m/s over ground) as one report
+    gives them; what the report does not give is None."""
 
     lat: float | None = None
     lon: float | None = None
     heading_deg: float | None = None
     course_deg: float | None = None
     speed: float | None = None  # m/s over ground
+
+
+@dataclass(frozen=True)
+class OwnShipReport(MotionReport):
+    """A partial own-ship report (GGA: position; HDT: heading; VTG: course, speed)."""
 
 
 @dataclass(frozen=True)
