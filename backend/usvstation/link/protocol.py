@@ -19,13 +19,12 @@ every `ramp_pose_period_s` with its instant mapped to the boat's uptime through 
 
 from __future__ import annotations
 
-import math
 import random
 from collections import Counter, deque
 from dataclasses import dataclass, field
 from typing import Any
 
-from usvstation.geometry import CDEG, CM, E7, MS
+from usvstation.geometry import CDEG, CM, E7, MS, require_finite
 from usvstation.link import wire
 from usvstation.link.mavlink import usv_recovery as mav
 from usvstation.link.mission import Mission, MissionItem
@@ -141,9 +140,7 @@ class RampPoseSample:
     yaw_rate: float = 0.0
 
     def __post_init__(self) -> None:
-        for name in ("t", "lat", "lon", "bearing_deg", "vn", "ve", "yaw_rate"):
-            if not math.isfinite(getattr(self, name)):
-                raise ValueError(f"ramp pose: {name} must be finite, got {getattr(self, name)}")
+        require_finite(self, "ramp pose")
         if not (-90.0 <= self.lat <= 90.0 and -180.0 <= self.lon <= 180.0):
             raise ValueError(f"ramp pose: lat, lon out of range: {self.lat}, {self.lon}")
 
