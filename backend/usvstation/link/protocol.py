@@ -161,21 +161,32 @@ class LinkDown:
 
 
 @dataclass(frozen=True)
-class BoatReport:
+class Received:
+    """A report the boat sent, stamped with the station time it arrived (`received_at`)."""
+
+    received_at: float = field(kw_only=True)
+
+
+@dataclass(frozen=True)
+class BoatReport(Received):
+    """USV_MISSION_STATE: the boat's mission, its state and its clock."""
+
     report: MissionState
-    received_at: float
+
+
+@dataclass(frozen=True)
+class TelemetryReceived(Received):
+    """GLOBAL_POSITION_INT with the latest of the boat's other reports."""
+
+    telemetry: Telemetry
 
 
 @dataclass(frozen=True)
 class BoatRebooted:
+    """The boot id in the boat's mission report changed: it restarted (clock sync is reset)."""
+
     old_boot_id: int
     new_boot_id: int
-
-
-@dataclass(frozen=True)
-class TelemetryReceived:
-    telemetry: Telemetry
-    received_at: float
 
 
 @dataclass(frozen=True)
@@ -738,10 +749,10 @@ class StationProtocol:
                 self._reports.clear()
             self.report, self.report_at = rep, now
             self._reports.append(rep)
-            events.append(BoatReport(rep, now))
+            events.append(BoatReport(rep, received_at=now))
         elif kind == "GLOBAL_POSITION_INT":
             self.telemetry = self._telemetry(msg)
-            events.append(TelemetryReceived(self.telemetry, now))
+            events.append(TelemetryReceived(self.telemetry, received_at=now))
         elif kind == "COMMAND_ACK":
             if msg.target_system in (0, self.config.station_id):
                 events += self.commands.handle(msg)
