@@ -15,7 +15,7 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -308,11 +308,12 @@ class ColregsGAOptions(SeedOptions):
 def _run_colregs_ga(sc: Scenario, seed: int, o: ColregsGAOptions) -> dict[str, Any]:
     import math
 
-    from usvstation.planning.seeds.colregs_ga import GAStepOptions, plan_colregs_ga
+    from usvstation.planning.seeds.colregs_ga import PAPER_001_GA, GAStepOptions, plan_colregs_ga
 
     paper = o.mode == "paper"
     go = GAStepOptions(
-        population=o.population, generations=300 if paper else o.generations,
+        ga=replace(PAPER_001_GA, population=o.population),
+        generations=300 if paper else o.generations,
         stall=20 if paper else o.stall_generations,
         yaw_rate_max_deg=5.0 if paper else o.yaw_rate_max_deg,
         d_ca=o.d_ca_m, risk_scale_m=o.risk_scale_m, improved=o.improved, paper_fitness=paper)
@@ -345,10 +346,17 @@ class ReplanGAOptions(SeedOptions):
 
 
 def _run_replan_ga(sc: Scenario, seed: int, o: ReplanGAOptions) -> dict[str, Any]:
-    from usvstation.planning.seeds.replan_ga import ReplanOptions, plan_replan
+    from usvstation.planning.seeds.replan_ga import (
+        PAPER_002_GA,
+        Replanning,
+        ReplanOptions,
+        plan_replan,
+    )
 
-    ro = ReplanOptions(population=o.population, generations_global=o.generations_global,
-                       generations_local=o.generations_local, unsafe_range_m=o.unsafe_range_m)
+    ro = ReplanOptions(ga=replace(PAPER_002_GA, population=o.population),
+                       generations_global=o.generations_global,
+                       generations_local=o.generations_local,
+                       replanning=Replanning(unsafe_range_m=o.unsafe_range_m))
 
     def core(s: Scenario, world: World, target: np.ndarray, cruise: float,
              rng: np.random.Generator) -> tuple:

@@ -117,6 +117,25 @@ class World:
         return np.hypot(dx, dy) - self.inflated
 
 
+@dataclass(frozen=True)
+class GeneticOperators:
+    """A genetic algorithm's population size and its crossover and mutation probabilities
+    (per individual or per gene, as each planner's paper says)."""
+
+    population: int
+    crossover: float
+    mutation: float
+
+    def roulette_pairs(self, pop: np.ndarray, weights: np.ndarray,
+                       rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
+        """Roulette-wheel selection: `population` parents drawn with probability in
+        proportion to `weights` (non-negative, not all zero), each paired with a mate, a
+        random permutation of the parents."""
+        idx = rng.choice(self.population, size=self.population, p=weights / weights.sum())
+        parents = pop[idx]
+        return parents, parents[rng.permutation(self.population)]
+
+
 def cruise_speed(scenario: Scenario, requested: float | None = None) -> float:
     """Planning speed: the requested one, else the start speed, inside the vessel's limits."""
     v = scenario.vessel
