@@ -11,19 +11,18 @@ from usvstation.scenario import load_scenario
 
 
 @pytest.mark.parametrize("planner", ["iga", "rrt-star"])
-def test_a_planners_document_reads_back_to_the_same_plan_and_the_same_bytes(planner):
-    doc = plan_with(load_scenario("case1"), planner, 1)
-    plan = Plan.from_document(doc)
-    assert json.dumps(plan.to_document()) == json.dumps(doc)  # same keys, order and values
-    assert Plan.from_document(plan.to_document()) == plan
+def test_a_planners_plan_reads_back_from_its_document_the_same(planner):
+    plan = plan_with(load_scenario("case1"), planner, 1)
+    doc = plan.to_document()
+    assert Plan.from_document(doc) == plan
+    assert json.dumps(Plan.from_document(doc).to_document()) == json.dumps(doc)  # same bytes
     assert pickle.loads(pickle.dumps(plan)) == plan  # it crosses the process pool
     assert plan.metrics.length_m == doc["metrics"]["length_m"]
     assert plan.waypoints[0].x == doc["waypoints"][0]["x"]
 
 
 def test_the_iga_plan_keeps_its_smoothed_path_sections_and_course():
-    doc = plan_with(load_scenario("case1"), "iga", 1)
-    plan = Plan.from_document(doc)
+    plan = plan_with(load_scenario("case1"), "iga", 1)
     assert plan.smoothed is not None and plan.smoothed.degree in (2, 3)
     assert list(plan.sections) == ["encoding", "history"]
     assert all(w.course_deg is not None for w in plan.waypoints)

@@ -236,8 +236,8 @@ def evaluate(scenario: Scenario, family: str, planner: str, seed: int,
     t0 = time.perf_counter()
     row: dict[str, Any] = {"planner": planner, "family": family, "scenario": scenario.name,
                            "seed": seed}
-    try:
-        plan = plan_with(scenario, planner, seed)
+    try:  # in the stable format, as the OMPL episodes' plans come (from their process)
+        plan = plan_with(scenario, planner, seed).to_document()
     except NoFeasiblePlan as exc:
         return {**row, "success": False, "error": str(exc)[:300],
                 "plan_time_ms": (time.perf_counter() - t0) * 1000.0}
@@ -457,7 +457,7 @@ def colregs_001(rows: list[dict[str, Any]], seeds: int,
                 except NoFeasiblePlan:
                     succ.append(False)
                     continue
-                m = p["metrics"]
+                m = p.metrics
                 succ.append(True)
                 times.append((time.perf_counter() - t0) * 1000.0 / max(m["steps"], 1))
                 gens.append(m["generations_per_step_mean"])

@@ -16,10 +16,11 @@ from __future__ import annotations
 
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field, replace
-from typing import Any, cast
+from typing import Any, Generic, TypeVar, cast
 
 from usvstation import records
 
+T = TypeVar("T")
 _STABLE = ("planner", "scenario", "seed", "waypoints", "metrics", "smoothed", "warnings")
 
 
@@ -70,9 +71,19 @@ class SmoothedPath:
                    tuple(Waypoint.from_document(p) for p in doc["points"]))
 
 
+class _Metric(Generic[T]):
+    """A metric every plan has, read by its name from `PlanMetrics.values`."""
+
+    def __set_name__(self, owner: type, name: str) -> None:
+        self.key = name
+
+    def __get__(self, metrics: PlanMetrics, owner: type | None = None) -> T:
+        return metrics.values[self.key]
+
+
 @dataclass(frozen=True)
 class PlanMetrics(Mapping[str, Any]):
-    """A plan's figures in the planner's order: the ones every planner reports as properties,
+    """A plan's figures in the planner's order: the ones every planner reports as attributes,
     the planner's own by key (`metrics["stop_reason"]`). Never changed in place: `updated`
     gives a copy with keys replaced or added (at the end)."""
 
@@ -93,35 +104,14 @@ class PlanMetrics(Mapping[str, Any]):
     def updated(self, **changes: Any) -> PlanMetrics:
         return PlanMetrics({**self.values, **changes})
 
-    @property
-    def fitness(self) -> float | None:
-        """The IGA's eq. 10 fitness; None for planners without one."""
-        return self.values["fitness"]
-
-    @property
-    def length_m(self) -> float:
-        return self.values["length_m"]
-
-    @property
-    def duration_s(self) -> float:
-        return self.values["duration_s"]
-
-    @property
-    def min_clearance_m(self) -> float | None:
-        """Least water between the hull and an obstacle; None without obstacles."""
-        return self.values["min_clearance_m"]
-
-    @property
-    def collision_free(self) -> bool:
-        return self.values["collision_free"]
-
-    @property
-    def generations(self) -> int:
-        return self.values["generations"]
-
-    @property
-    def elapsed_s(self) -> float:
-        return self.values["elapsed_s"]
+    # the figures every planner reports (shared/DESIGN.md "Plan output")
+    fitness = _Metric[float | None]()  # the IGA's eq. 10 fitness; None for the others
+    length_m = _Metric[float]()
+    duration_s = _Metric[float]()
+    min_clearance_m = _Metric[float | None]()  # hull to obstacle; None without obstacles
+    collision_free = _Metric[bool]()
+    generations = _Metric[int]()
+    elapsed_s = _Metric[float]()
 
     def to_document(self) -> records.PlanMetrics:
         return cast(records.PlanMetrics, dict(self.values))
