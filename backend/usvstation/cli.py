@@ -11,10 +11,13 @@ import json
 import os
 import sys
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from usvstation import __version__
 from usvstation.runtime import tune_allocator
+
+if TYPE_CHECKING:
+    from usvstation.planning.model import Plan
 
 EXIT_OK, EXIT_ERROR, EXIT_INVALID, EXIT_INFEASIBLE = 0, 1, 2, 3
 # planning.registry's names, listed here so that --help does not import NumPy (tested equal)
@@ -261,7 +264,7 @@ def _cmd_plan(args: argparse.Namespace) -> int:
                        EXIT_INVALID) from None
     except NoFeasiblePlan as exc:
         raise CliError(str(exc), EXIT_INFEASIBLE) from None
-    text = json.dumps(plan, indent=2)
+    text = json.dumps(plan.to_document(), indent=2)
     if args.out:
         try:
             args.out.write_text(text + "\n", encoding="utf-8")
@@ -274,13 +277,13 @@ def _cmd_plan(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def format_plan(plan: dict[str, Any]) -> str:
+def format_plan(plan: Plan) -> str:
     """A readable summary of a plan for a terminal."""
-    m = plan["metrics"]
-    clearance = "n/a" if m["min_clearance_m"] is None else f"{m['min_clearance_m']:.2f} m"
+    m = plan.metrics
+    clearance = "n/a" if m.min_clearance_m is None else f"{m.min_clearance_m:.2f} m"
     lines = [
-        f"{plan['scenario']}: {plan['planner']} plan, seed {plan['seed']}: "
-        f"{len(plan['waypoints'])} waypoints, {m['length_m']:.1f} m in {m['duration_s']:.1f} s, "
+        f"{plan.scenario}: {plan.planner} plan, seed {plan.seed}: "
+        f"{len(plan.waypoints)} waypoints, {m.length_m:.1f} m in {m.duration_s:.1f} s, "
         f"min clearance {clearance}",
         (f"fitness {m['fitness']:.4f} (Fit_d {m['fit_d']:.3f}, Fit_T {m['fit_t']:.2f} s, "
          f"Fit_ang {m['fit_ang']:.3f}, Fit_mal {m['fit_mal']:.2f} m); "
@@ -292,10 +295,10 @@ def format_plan(plan: dict[str, Any]) -> str:
         f"{'#':>3} {'x (m)':>9} {'y (m)':>9} {'t (s)':>8} {'speed (m/s)':>12} "
         f"{'heading (deg)':>14}",
     ]
-    for i, w in enumerate(plan["waypoints"]):
+    for i, w in enumerate(plan.waypoints):
         lines.append(
-            f"{i:>3} {w['x']:>9.2f} {w['y']:>9.2f} {w['t']:>8.2f} {w['speed']:>12.2f} "
-            f"{w['heading_deg']:>14.1f}"
+            f"{i:>3} {w.x:>9.2f} {w.y:>9.2f} {w.t:>8.2f} {w.speed:>12.2f} "
+            f"{w.heading_deg:>14.1f}"
         )
     return "\n".join(lines)
 

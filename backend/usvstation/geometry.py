@@ -10,7 +10,7 @@ NumPy, so every layer may use it.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -89,6 +89,26 @@ def inflated_radius(r_obs: ArrayLike, hull_length: float, r_c: float) -> float |
     length D_USV and the compensation radius R_c (drift; the paper takes 1 m)."""
     r = r_obs if _scalar(r_obs) else np.asarray(r_obs, dtype=float)
     return r + hull_length + r_c
+
+
+# --- records ---------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Pose:
+    """A pose in the ramp frame: position x, y (m) and heading psi (rad, anticlockwise
+    from +x)."""
+
+    x: float
+    y: float
+    psi: float
+
+
+def require_finite(record: object, what: str) -> None:
+    """Refuse a dataclass record with a field that is not a finite number: a ValueError
+    `"<what>: <field> must be finite (got <value>)"` naming the first such field."""
+    for f in fields(record):  # type: ignore[arg-type]
+        value = getattr(record, f.name)
+        if not math.isfinite(value):
+            raise ValueError(f"{what}: {f.name} must be finite (got {value})")
 
 
 # --- link units (MAVLink integer fields) -------------------------------------------------------

@@ -14,7 +14,7 @@ try:
     print("allocated")
 except MemoryError:
     print("MemoryError")
-print(plan_scenario(load_scenario("case1"), seed=1)["metrics"]["collision_free"])
+print(plan_scenario(load_scenario("case1"), seed=1).metrics.collision_free)
 """
 
 

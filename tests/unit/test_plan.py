@@ -17,7 +17,7 @@ PUBLIC = bundled_scenario_names()
 @pytest.mark.parametrize("seed", [1, 2, 3])
 def test_public_suite_plans_are_valid(name, seed):
     scenario = load_scenario(name)
-    plan = plan_scenario(scenario, seed=seed)
+    plan = plan_scenario(scenario, seed=seed).to_document()
     assert plan_violations(plan, scenario) == []
     m = plan["metrics"]
     assert m["collision_free"] and m["min_clearance_m"] >= scenario.vessel.length / 2
@@ -27,7 +27,7 @@ def test_public_suite_plans_are_valid(name, seed):
 
 
 def test_plan_format_is_stable():
-    plan = plan_scenario(load_scenario("case1"), seed=1)
+    plan = plan_scenario(load_scenario("case1"), seed=1).to_document()
     assert {"planner", "scenario", "seed", "waypoints", "metrics"} <= plan.keys()
     assert (plan["planner"], plan["scenario"], plan["seed"]) == ("iga", "case1", 1)
     assert set(plan["waypoints"][0]) == {"x", "y", "t", "speed", "heading_deg", "course_deg"}
@@ -47,24 +47,25 @@ def test_plan_format_is_stable():
 
 def test_same_seed_same_plan_other_seed_other_plan():
     scenario = load_scenario("case2")
-    a, b = plan_scenario(scenario, seed=5), plan_scenario(scenario, seed=5)
+    a = plan_scenario(scenario, seed=5).to_document()
+    b = plan_scenario(scenario, seed=5).to_document()
     assert a["waypoints"] == b["waypoints"]
     assert {k: v for k, v in a["metrics"].items() if k != "elapsed_s"} == \
         {k: v for k, v in b["metrics"].items() if k != "elapsed_s"}
-    assert plan_scenario(scenario, seed=6)["waypoints"] != a["waypoints"]
+    assert plan_scenario(scenario, seed=6).to_document()["waypoints"] != a["waypoints"]
 
 
 def test_scenario_seed_is_the_default():
     data = load_scenario("case3").model_dump()
     data["planner"] = {"seed": 9}
-    plan = plan_scenario(parse_scenario(data))
+    plan = plan_scenario(parse_scenario(data)).to_document()
     assert plan["seed"] == 9
-    assert plan_scenario(parse_scenario(data), seed=4)["seed"] == 4
+    assert plan_scenario(parse_scenario(data), seed=4).to_document()["seed"] == 4
 
 
 def test_smoothed_path_is_returned_and_checked():
     scenario = load_scenario("case4")
-    plan = plan_scenario(scenario, seed=1)
+    plan = plan_scenario(scenario, seed=1).to_document()
     smooth = plan["smoothed"]
     assert smooth["collision_free"] is True and smooth["degree"] in (2, 3)
     pts = smooth["points"]
@@ -77,7 +78,7 @@ def test_smoothed_path_is_returned_and_checked():
 
 def test_transit_plan_is_valid():
     scenario = random_transit(1)
-    plan = plan_scenario(scenario, seed=1)
+    plan = plan_scenario(scenario, seed=1).to_document()
     assert plan_violations(plan, scenario) == []
     w = plan["waypoints"]
     assert (w[-1]["x"], w[-1]["y"]) == pytest.approx((scenario.goal.x, scenario.goal.y))
@@ -93,7 +94,7 @@ def enclosed_goal():
 
 def test_enclosed_goal_has_no_feasible_plan():
     with pytest.raises(NoFeasiblePlan) as info:
-        plan_scenario(enclosed_goal(), seed=1)
+        plan_scenario(enclosed_goal(), seed=1).to_document()
     message = str(info.value)
     assert message.startswith("no feasible plan")
     assert "the goal is enclosed: obstacles[" in message
@@ -104,7 +105,7 @@ def test_blocked_ramp_run_in_is_explained():
     data = {"name": "blocked", "start": {"x": 60.0, "y": 0.0},
             "obstacles": [{"x": 7.0, "y": 0.5, "radius": 2.5}]}
     with pytest.raises(NoFeasiblePlan, match=r"ramp axis is blocked: obstacles\[0\]"):
-        plan_scenario(parse_scenario(data), seed=1)
+        plan_scenario(parse_scenario(data), seed=1).to_document()
 
 
 def test_reduced_clearance_fallback_is_reported():
@@ -114,12 +115,12 @@ def test_reduced_clearance_fallback_is_reported():
             "obstacles": [{"x": 3.0, "y": 3.5, "radius": 1.5},
                           {"x": 3.0, "y": -3.5, "radius": 1.5}]}
     scenario = parse_scenario(data)
-    plan = plan_scenario(scenario, seed=1)
+    plan = plan_scenario(scenario, seed=1).to_document()
     assert plan_violations(plan, scenario) == []
     assert plan["metrics"]["inflation_m"] == pytest.approx(1.2)
     assert plan["warnings"] and plan["warnings"][0].startswith("reduced clearance")
     with pytest.raises(NoFeasiblePlan):
-        plan_scenario(scenario, seed=1, clearance_fallback=False)
+        plan_scenario(scenario, seed=1, clearance_fallback=False).to_document()
 
 
 @pytest.mark.parametrize("ablation", ["EG2", "EG4"])
@@ -128,7 +129,7 @@ def test_ablations_still_plan_validly(ablation):
 
     scenario = load_scenario("case1")
     overrides = IGAOptions.ablation(ablation).model_dump(exclude_defaults=True)
-    plan = plan_scenario(scenario, seed=1, **overrides)
+    plan = plan_scenario(scenario, seed=1, **overrides).to_document()
     assert plan_violations(plan, scenario) == []
 
 
@@ -144,7 +145,7 @@ def test_eg1_never_calls_the_preheater(monkeypatch):
     scenario = load_scenario("case3")
     overrides = IGAOptions.ablation("EG1").model_dump(exclude_defaults=True)
     try:
-        plan = plan_scenario(scenario, seed=1, **overrides)
+        plan = plan_scenario(scenario, seed=1, **overrides).to_document()
     except NoFeasiblePlan:
         return  # without preheating a random population may find nothing feasible
     assert plan_violations(plan, scenario) == []
@@ -157,7 +158,7 @@ def test_random_recoveries_are_planned_validly():
     for i in range(n):
         scenario = random_recovery(1000 + i)
         try:
-            plan = plan_scenario(scenario, seed=1)
+            plan = plan_scenario(scenario, seed=1).to_document()
         except NoFeasiblePlan:
             continue
         assert plan_violations(plan, scenario) == []  # a plan, when given, is always valid

@@ -79,7 +79,7 @@ def test_a_plan_above_the_memory_bound_is_refused_in_one_line():
     assert circle_count(sc) == Problem.from_scenario(sc).obstacles.count == 30000
     assert estimate_bytes(sc, sc.planner_options()) > PLAN_BYTES_MAX
     with pytest.raises(PlanTooLarge) as info:
-        plan_scenario(sc, seed=1)
+        plan_scenario(sc, seed=1).to_document()
     msg = str(info.value)
     assert isinstance(info.value, ScenarioError)
     assert msg.startswith("planner: this plan would need about ")

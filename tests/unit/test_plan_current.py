@@ -52,7 +52,7 @@ def assert_valid(plan, sc):
 @pytest.mark.parametrize("direction_deg", [0.0, 90.0, 270.0])
 def test_recovery_against_a_strong_current_is_planned_and_valid(current, direction_deg):
     sc = recovery(current, direction_deg)
-    plan = plan_scenario(sc, seed=1)
+    plan = plan_scenario(sc, seed=1).to_document()
     assert_valid(plan, sc)
     last = plan["waypoints"][-1]
     assert (last["x"], last["y"]) == (0.0, 0.0)
@@ -67,7 +67,7 @@ def test_a_boat_set_back_by_the_current_is_planned_along_its_hull(current):
     assert state.course == pytest.approx(math.pi)
     # the least ground speed the leg towards the ramp admits: speed_min over ground
     assert state.speed == pytest.approx(sc.vessel.speed_min)
-    plan = plan_scenario(sc, seed=1)
+    plan = plan_scenario(sc, seed=1).to_document()
     assert_valid(plan, sc)
     first = plan["waypoints"][0]
     assert first["speed"] == pytest.approx(sc.vessel.speed_min)
@@ -75,7 +75,7 @@ def test_a_boat_set_back_by_the_current_is_planned_along_its_hull(current):
 
 
 def test_stronger_current_takes_longer_over_ground():
-    durations = [plan_scenario(recovery(c, 0.0), seed=1)["metrics"]["duration_s"]
+    durations = [plan_scenario(recovery(c, 0.0), seed=1).to_document()["metrics"]["duration_s"]
                  for c in (1.0, 1.5, 2.0)]
     assert durations == sorted(durations)
     # 82 m at most speed_max - current over ground
@@ -85,7 +85,7 @@ def test_stronger_current_takes_longer_over_ground():
 @pytest.mark.parametrize("current", [1.0, 2.0])
 def test_a_still_boat_in_a_strong_current_is_planned(current):
     sc = recovery(current, 0.0, speed=0.0)
-    assert_valid(plan_scenario(sc, seed=1), sc)
+    assert_valid(plan_scenario(sc, seed=1).to_document(), sc)
 
 
 @pytest.mark.parametrize("seed", [1, 2, 3])
@@ -95,7 +95,7 @@ def test_bench_episode_with_the_ship_at_two_metres_a_second(seed):
     from usvstation.bench.live import episode_scenario
 
     sc = episode_scenario(np.random.default_rng(1000 + seed), 2.0)
-    plan = plan_scenario(sc, seed=seed)
+    plan = plan_scenario(sc, seed=seed).to_document()
     assert_valid(plan, sc)
 
 
@@ -109,5 +109,5 @@ def test_a_boat_pointing_away_in_a_strong_current_turns_within_the_limit(
     # Static obstacles only: the slow run-out against 2 m/s (about 85 s) would meet the
     # moving one of OBSTACLES where it is then.
     sc = recovery(current, direction_deg, speed=1.5, heading=heading, obstacles=OBSTACLES[:2])
-    plan = plan_scenario(sc, seed=1)
+    plan = plan_scenario(sc, seed=1).to_document()
     assert_valid(plan, sc)

@@ -44,7 +44,7 @@ def test_tangent_hull_is_a_collision_and_clearance_is_water_between_hull_and_obs
 
 def test_returned_min_clearance_is_the_hull_water_clearance():
     sc = load_scenario("case2")
-    plan = plan_scenario(sc, seed=1)
+    plan = plan_scenario(sc, seed=1).to_document()
     assert plan["metrics"]["min_clearance_m"] == pytest.approx(hull_clearance(plan, sc), abs=1e-5)
     assert plan["metrics"]["margin_kept"] is True
     assert plan["metrics"]["min_clearance_m"] > 0.0
@@ -55,7 +55,7 @@ def test_returned_min_clearance_is_the_hull_water_clearance():
 @pytest.mark.parametrize("heading", [0.0, 90.0, 270.0, 45.0])
 def test_boat_pointing_away_turns_within_the_limit(heading):
     sc = scenario(start={"x": 85.0, "y": 10.0, "heading_deg": heading, "speed": 2.0})
-    plan = plan_scenario(sc, seed=1)
+    plan = plan_scenario(sc, seed=1).to_document()
     assert plan_violations(plan, sc) == []
     assert first_turn_deg(plan, sc) <= sc.vessel.turn_max_deg + 1e-6
 
@@ -69,7 +69,7 @@ def test_a_plan_ignoring_the_start_heading_is_refused():
 @pytest.mark.parametrize("direction", [0.0, 90.0, 180.0, 225.0])
 def test_strong_current_keeps_speed_through_the_water_in_limits(direction):
     sc = scenario(environment={"current_speed": 1.0, "current_dir_deg": direction})
-    plan = plan_scenario(sc, seed=1)
+    plan = plan_scenario(sc, seed=1).to_document()
     assert plan_violations(plan, sc) == []
     for lo, hi, forward in water_speeds(plan, sc):
         assert sc.vessel.speed_min - 1e-4 <= lo and hi <= sc.vessel.speed_max + 1e-4 and forward
@@ -81,9 +81,9 @@ def test_strong_current_keeps_speed_through_the_water_in_limits(direction):
 
 
 def test_current_changes_the_plan():
-    calm = plan_scenario(scenario(), seed=1)
+    calm = plan_scenario(scenario(), seed=1).to_document()
     against = plan_scenario(scenario(environment={"current_speed": 0.8,
-                                                  "current_dir_deg": 0.0}), seed=1)
+                                                  "current_dir_deg": 0.0}), seed=1).to_document()
     assert calm["waypoints"] != against["waypoints"]
 
 
@@ -102,7 +102,7 @@ def crossing_ship():
 
 def test_timing_margin_keeps_the_hull_clear_when_early_or_late():
     sc = crossing_ship()
-    plan = plan_scenario(sc, seed=1)
+    plan = plan_scenario(sc, seed=1).to_document()
     assert plan_violations(plan, sc) == []
     ship = sc.obstacles[0]
     half = sc.vessel.length / 2
@@ -129,16 +129,17 @@ def test_a_plan_that_only_works_on_time_is_refused():
                                    {"x": 2.0, "y": -8.0, "heading_deg": 90.0, "speed": 1.5}])
 def test_starts_behind_or_beside_the_ramp(start):
     sc = scenario(start=start)
-    plan = plan_scenario(sc, seed=1)
+    plan = plan_scenario(sc, seed=1).to_document()
     assert plan_violations(plan, sc) == []
     assert abs(plan["waypoints"][-1]["course_deg"] - 180.0) <= 10.0
 
 
 def test_replan_from_a_boat_under_way_propagates_obstacles():
     sc = crossing_ship()
-    first = plan_scenario(sc, seed=1)
+    first = plan_scenario(sc, seed=1).to_document()
     w = first["waypoints"][3]
-    again = replan_from(sc, w["x"], w["y"], w["heading_deg"], w["speed"], w["t"], seed=1)
+    again = replan_from(sc, w["x"], w["y"], w["heading_deg"], w["speed"], w["t"],
+                        seed=1).to_document()
     assert again["waypoints"][0]["x"] == pytest.approx(w["x"])
     assert again["waypoints"][0]["t"] == 0.0
     ship = sc.obstacles[0]
@@ -150,7 +151,7 @@ def test_replan_from_a_boat_under_way_propagates_obstacles():
 def test_time_budget_is_respected_with_a_warning_or_no_plan():
     sc = load_scenario("case4")
     try:
-        plan = plan_scenario(sc, seed=1, time_budget_s=0.001)
+        plan = plan_scenario(sc, seed=1, time_budget_s=0.001).to_document()
     except NoFeasiblePlan as exc:
         assert "time budget" in str(exc) or "no feasible plan" in str(exc)
     else:

@@ -33,7 +33,7 @@ def test_registry_lists_every_planner_with_paper_and_capabilities():
 @pytest.mark.parametrize("name", SEED_PLANNERS)
 def test_seed_planner_plans_pass_the_checker(name):
     sc = load_scenario("case2")
-    plan = plan_with(sc, name, 1)
+    plan = plan_with(sc, name, 1).to_document()
     assert plan["planner"] == name and plan["scenario"] == "case2"
     assert plan_violations(plan, sc) == []
     wps = plan["waypoints"]
@@ -52,7 +52,7 @@ def test_open_water_plans_have_no_clearance_and_match_the_plan_record(name):
     from usvstation.records import PlanDocument
 
     sc = load_scenario("case1").model_copy(update={"obstacles": []})
-    plan = plan_with(sc, name, 1)
+    plan = plan_with(sc, name, 1).to_document()
     assert plan["metrics"]["min_clearance_m"] is None
     assert plan_violations(plan, sc) == []
     assert TypeAdapter(PlanDocument).validate_python(plan) == plan  # nothing lost or changed
@@ -61,18 +61,18 @@ def test_open_water_plans_have_no_clearance_and_match_the_plan_record(name):
 @pytest.mark.parametrize("name", ["rrt-star", "vpf-rrt-star", "de-apf"])
 def test_same_seed_same_plan(name):
     sc = load_scenario("case1")
-    a, b = plan_with(sc, name, 3), plan_with(sc, name, 3)
+    a, b = plan_with(sc, name, 3).to_document(), plan_with(sc, name, 3).to_document()
     assert a["waypoints"] == b["waypoints"]
 
 
 def test_unknown_planner_and_bad_option_name_the_field():
     sc = load_scenario("case1")
     with pytest.raises(PlannerOptionError, match="planner: unknown planner 'nope'"):
-        plan_with(sc, "nope")
+        plan_with(sc, "nope").to_document()
     with pytest.raises(PlannerOptionError, match=r"planner\.iterations"):
-        plan_with(sc, "rrt-star", 1, iterations=3)
+        plan_with(sc, "rrt-star", 1, iterations=3).to_document()
     with pytest.raises(PlannerOptionError, match=r"planner\.bogus"):
-        plan_with(sc, "de-apf", 1, bogus=1)
+        plan_with(sc, "de-apf", 1, bogus=1).to_document()
 
 
 ENCLOSED = {
@@ -88,7 +88,7 @@ ENCLOSED = {
 def test_enclosed_goal_is_no_feasible_plan(name):
     with pytest.raises(NoFeasiblePlan, match=name):
         plan_with(parse_scenario(ENCLOSED), name, 1, attempts=2, **(
-            {"iterations": 300} if name == "rrt-star" else {}))
+            {"iterations": 300} if name == "rrt-star" else {})).to_document()
 
 
 def test_cli_plan_with_planner(tmp_path, capsys):

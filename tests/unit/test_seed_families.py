@@ -65,7 +65,7 @@ def test_static_only_planners_say_they_plan_against_swept_corridors():
 @pytest.mark.parametrize("name", ["de-apf", "rrt-star"])
 def test_static_only_planner_passes_a_crossing_target_on_its_corridor(name):
     sc = next(s for s in colregs_cases() if s.name == "colregs-crossing-give-way-b")
-    plan = plan_with(sc, name, 1)
+    plan = plan_with(sc, name, 1).to_document()
     assert plan_violations(plan, sc) == []
     assert plan["metrics"]["obstacle_model"] in ("swept", "timed")
     assert plan["metrics"]["min_clearance_m"] > 0.0
@@ -76,14 +76,14 @@ def test_de_apf_leaves_the_u_shape_by_following_its_edge():
     give up there); following the edge brings it round."""
     sc = next(s for s in trap_cases() if s.name == "trap-u-shape")
     for seed in (1, 2):
-        plan = plan_with(sc, "de-apf", seed)
+        plan = plan_with(sc, "de-apf", seed).to_document()
         assert plan_violations(plan, sc) == []
         assert plan["metrics"]["length_m"] > 105.0  # went round, not through
 
 
 def test_colregs_ga_reaches_a_goal_beside_an_obstacle():
     sc = next(s for s in trap_cases() if s.name == "trap-goal-beside-obstacle")
-    plan = plan_with(sc, "colregs-ga", 1)
+    plan = plan_with(sc, "colregs-ga", 1).to_document()
     assert plan_violations(plan, sc) == []
     last = plan["waypoints"][-1]
     assert (last["x"], last["y"]) == (100.0, 0.0)
@@ -111,7 +111,7 @@ def test_a_mover_crossing_the_run_in_at_arrival_is_passed_at_another_speed():
     from usvstation.bench.scenarios import random_recovery
 
     sc = random_recovery(1001)
-    plan = plan_with(sc, "rrt-star", 1)
+    plan = plan_with(sc, "rrt-star", 1).to_document()
     assert plan_violations(plan, sc) == []
     assert plan["metrics"]["attempts"] == 2
 
@@ -124,6 +124,6 @@ def test_a_route_turning_too_far_from_the_start_heading_gets_a_lead_in():
 
     sc = random_recovery(1004)
     assert sc.start.speed >= 0.5
-    plan = plan_with(sc, "de-apf", 2)
+    plan = plan_with(sc, "de-apf", 2).to_document()
     assert plan_violations(plan, sc) == []
     assert first_turn_deg(plan, sc) <= sc.vessel.turn_max_deg

@@ -97,7 +97,7 @@ def test_ttm_relative_bearing_in_kilometres() -> None:
 
 def test_tll_position() -> None:
     r = one("ARPA TLL 3: 30.502 N 122.001 E")
-    assert r == RadarFix(3, pytest.approx(30.502), pytest.approx(122.001), "BUOY")
+    assert r == RadarFix(3, pytest.approx(30.502), pytest.approx(122.001), name="BUOY")
 
 
 def test_unused_valid_sentence_is_ignored_not_bad() -> None:

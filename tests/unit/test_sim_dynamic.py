@@ -16,7 +16,7 @@ from usvstation.sim.vehicle import Vehicle, Waypoint
 @pytest.fixture(scope="module")
 def mission():
     scenario = scenario_for_vessel(load_scenario("case1"), otter())
-    plan = plan_scenario(scenario, seed=1)
+    plan = plan_scenario(scenario, seed=1).to_document()
     wps = [Waypoint(w["x"], w["y"], w["t"], w["speed"], math.radians(w["heading_deg"]))
            for w in plan["waypoints"]]
     return scenario, plan, wps

@@ -57,10 +57,10 @@ def test_target_prediction_in_ramp_frame_with_ground_and_relative_velocity() -> 
     world.update_track(0.0, "ais:1", "ais", mmsi=1, lat=tlat, lon=tlon, speed=3.0,
                        course_deg=180.0, length=12.0)
     (t,) = world.targets(10.0)
-    assert (t.x, t.y) == pytest.approx((70.0, 0.0), abs=1e-3)
-    assert (t.vx, t.vy) == pytest.approx((-3.0, 0.0), abs=1e-9)
-    assert (t.rvx, t.rvy) == (t.vx, t.vy)
-    assert t.radius == 6.0 and t.age_s == 10.0
+    assert (t["x"], t["y"]) == pytest.approx((70.0, 0.0), abs=1e-3)
+    assert (t["vx"], t["vy"]) == pytest.approx((-3.0, 0.0), abs=1e-9)
+    assert (t["rvx"], t["rvy"]) == (t["vx"], t["vy"])
+    assert t["radius"] == 6.0 and t["age_s"] == 10.0
 
 
 def test_relative_velocity_subtracts_the_ship() -> None:
@@ -70,8 +70,8 @@ def test_relative_velocity_subtracts_the_ship() -> None:
     world.update_track(0.0, "ais:2", "ais", lat=tlat, lon=tlon, speed=1.5, course_deg=0.0)
     (t,) = world.targets(0.0)
     # ramp +x points south: a target sailing north at the ship's speed is still in the frame
-    assert (t.vx, t.vy) == pytest.approx((-1.5, 0.0), abs=1e-9)
-    assert (t.rvx, t.rvy) == pytest.approx((0.0, 0.0), abs=1e-9)
+    assert (t["vx"], t["vy"]) == pytest.approx((-1.5, 0.0), abs=1e-9)
+    assert (t["rvx"], t["rvy"]) == pytest.approx((0.0, 0.0), abs=1e-9)
 
 
 def test_static_report_keeps_position_and_names_the_track() -> None:
@@ -90,8 +90,8 @@ def test_silent_tracks_age_out_but_manual_ones_stay() -> None:
     assert world.expire(30.0) == []
     assert world.expire(30.5) == ["ais:4"]
     (m,) = world.targets(100.0)
-    assert m.id == "manual:0" and m.source == "manual" and m.radius == 3.0
-    assert (m.x, m.y) == pytest.approx((50.0, -45.0), abs=1e-3)
+    assert m["id"] == "manual:0" and m["source"] == "manual" and m["radius"] == 3.0
+    assert (m["x"], m["y"]) == pytest.approx((50.0, -45.0), abs=1e-3)
 
 
 def test_radar_target_from_range_and_bearing() -> None:
@@ -113,6 +113,6 @@ def test_prediction_moves_by_speed_times_time(speed: float, course: float, dt: f
     world = World(anchor=RampFrame(LAT, LON, 0.0))
     world.update_track(0.0, "sim:1", "sim", lat=LAT, lon=LON, speed=speed, course_deg=course)
     (t,) = world.targets(dt)
-    assert math.hypot(t.x, t.y) == pytest.approx(speed * dt, abs=1e-6)
+    assert math.hypot(t["x"], t["y"]) == pytest.approx(speed * dt, abs=1e-6)
     ve, vn = compass_to_enu(speed, course)
-    assert (t.vy, t.vx) == pytest.approx((-ve, vn), abs=1e-9)
+    assert (t["vy"], t["vx"]) == pytest.approx((-ve, vn), abs=1e-9)

@@ -36,7 +36,7 @@ async def get_world_scenario(request: Request) -> WorldScenario:
     if pose is not None:
         vx, vy = pose.frame.vector_to_ramp(pose.ve, pose.vn)
         frame_v = (float(vx), float(vy))
-    targets = [TargetState(v.id, v.x, v.y, v.rvx, v.rvy, v.radius)
+    targets = [TargetState(v["id"], v["x"], v["y"], v["rvx"], v["rvy"], v["radius"])
                for v in world.world.targets(t)]
     scenario, dropped = world_scenario(base, targets, frame_v)
     return {"scenario": scenario.model_dump(mode="json"), "dropped": dropped}

@@ -25,6 +25,7 @@ from typing import Any
 
 import numpy as np
 
+from usvstation.bench.render import markdown_table
 from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.planning.registry import plan_with, planner_names
 from usvstation.scenario import Scenario, load_scenario, parse_scenario
@@ -235,8 +236,8 @@ def evaluate(scenario: Scenario, family: str, planner: str, seed: int,
     t0 = time.perf_counter()
     row: dict[str, Any] = {"planner": planner, "family": family, "scenario": scenario.name,
                            "seed": seed}
-    try:
-        plan = plan_with(scenario, planner, seed)
+    try:  # in the stable format, as the OMPL episodes' plans come (from their process)
+        plan = plan_with(scenario, planner, seed).to_document()
     except NoFeasiblePlan as exc:
         return {**row, "success": False, "error": str(exc)[:300],
                 "plan_time_ms": (time.perf_counter() - t0) * 1000.0}
@@ -456,7 +457,7 @@ def colregs_001(rows: list[dict[str, Any]], seeds: int,
                 except NoFeasiblePlan:
                     succ.append(False)
                     continue
-                m = p["metrics"]
+                m = p.metrics
                 succ.append(True)
                 times.append((time.perf_counter() - t0) * 1000.0 / max(m["steps"], 1))
                 gens.append(m["generations_per_step_mean"])
@@ -476,33 +477,28 @@ def colregs_001(rows: list[dict[str, Any]], seeds: int,
 
 
 def render_markdown(result: dict[str, Any]) -> str:
-    lines = ["| planner | family | episodes | success | public | hidden | length m | NI | "
-             "duration s | clearance m | total turn deg | max turn deg | plan ms | "
-             "tracked dev m | COLREGs |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
-    for pl, fams in result["summary"].items():
-        for fam, e in fams.items():
-            lines.append(
-                f"| {pl} | {fam} | {e['episodes']} | {e['success_rate']:.2f} | "
-                f"{_f(e.get('public_success'), 2)} | {_f(e.get('hidden_success'), 2)} | "
-                f"{_f(e['length_m'])} | {_f(e['normalization_index'], 3)} | {_f(e['duration_s'])} "
-                f"| {_f(e['min_clearance_m'], 2)} | {_f(e['total_turn_deg'])} | "
-                f"{_f(e['max_turn_deg'])} | {_f(e['plan_time_ms'])} | "
-                f"{_f(e.get('track_mean_dev_m'), 2)} | {_f(e.get('colregs_score'), 2)} |")
+    lines = markdown_table(
+        ["planner", "family", "episodes", "success", "public", "hidden", "length m", "NI",
+         "duration s", "clearance m", "total turn deg", "max turn deg", "plan ms",
+         "tracked dev m", "COLREGs"],
+        ([pl, fam, e["episodes"], f"{e['success_rate']:.2f}", _f(e.get("public_success"), 2),
+          _f(e.get("hidden_success"), 2), _f(e["length_m"]), _f(e["normalization_index"], 3),
+          _f(e["duration_s"]), _f(e["min_clearance_m"], 2), _f(e["total_turn_deg"]),
+          _f(e["max_turn_deg"]), _f(e["plan_time_ms"]), _f(e.get("track_mean_dev_m"), 2),
+          _f(e.get("colregs_score"), 2)]
+         for pl, fams in result["summary"].items() for fam, e in fams.items()))
     t = result["table_004"]
-    lines += ["", "Paper 004 Tab. 5/6 shape (dense family, means over maps and seeds):", "",
-              "| algorithm | length m | TTA deg | plan ms | sailing s | NI |",
-              "|---|---|---|---|---|---|"]
-    for pl in ("rrt-star", "bspline-rrt-star", "vpf-rrt-star", "ompl:RRTstar",
-               "ompl:InformedRRTstar", "ompl:BITstar"):
-        if pl in t:
-            e = t[pl]
-            lines.append(f"| {pl} | {e['length_m']:.1f} | {e['total_turn_deg']:.1f} | "
-                         f"{e['plan_time_ms']:.0f} | {e['duration_s']:.1f} | "
-                         f"{e['normalization_index']:.3f} |")
-    lines += ["", "| ratio | here | paper |", "|---|---|---|"]
-    for k, rng in PAPER_004.items():
-        lines.append(f"| {k} | {_f(t.get(k), 3)} | {rng[0]}-{rng[1]} |")
+    lines += ["", "Paper 004 Tab. 5/6 shape (dense family, means over maps and seeds):", ""]
+    lines += markdown_table(
+        ["algorithm", "length m", "TTA deg", "plan ms", "sailing s", "NI"],
+        ([pl, f"{e['length_m']:.1f}", f"{e['total_turn_deg']:.1f}", f"{e['plan_time_ms']:.0f}",
+          f"{e['duration_s']:.1f}", f"{e['normalization_index']:.3f}"]
+         for pl in ("rrt-star", "bspline-rrt-star", "vpf-rrt-star", "ompl:RRTstar",
+                    "ompl:InformedRRTstar", "ompl:BITstar") if pl in t for e in (t[pl],)))
+    lines += [""]
+    lines += markdown_table(["ratio", "here", "paper"],
+                            ([k, _f(t.get(k), 3), f"{rng[0]}-{rng[1]}"]
+                             for k, rng in PAPER_004.items()))
     r = result["replan_002"]
     lines += ["", f"Re-planning (002): {r['count']} re-plans, p50 {_f(r['p50_ms'], 2)} ms, "
               f"p99 {_f(r['p99_ms'], 2)} ms (paper 0.98 s in MATLAB)."]
@@ -510,11 +506,13 @@ def render_markdown(result: dict[str, Any]) -> str:
     lines += ["", f"COLREGs (001): starboard_ok {c.get('starboard_ok')} over {c.get('cases')} "
               "give-way/head-on episodes."]
     if "table_iii" in c:
-        lines += ["", "| GA (001 Tab. III) | ms per step | success | generations per step | "
-                  "final fitness std |", "|---|---|---|---|---|"]
-        for label, e in c["table_iii"].items():
-            lines.append(f"| {label} | {_f(e['ms_per_step'], 2)} | {e['success_rate']:.2f} | "
-                         f"{_f(e['generations_per_step'], 1)} | {_f(e['final_fitness_std'], 4)} |")
+        lines += [""]
+        lines += markdown_table(
+            ["GA (001 Tab. III)", "ms per step", "success", "generations per step",
+             "final fitness std"],
+            ([label, _f(e["ms_per_step"], 2), f"{e['success_rate']:.2f}",
+              _f(e["generations_per_step"], 1), _f(e["final_fitness_std"], 4)]
+             for label, e in c["table_iii"].items()))
     return "\n".join(lines) + "\n"
 
 

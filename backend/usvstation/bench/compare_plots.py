@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
+from usvstation.bench.render import box_plot, save_svg
 from usvstation.scenario import Scenario
 
 
@@ -35,26 +36,17 @@ def write_plots(rows: list[dict[str, Any]], folder: Path,
         ax.set_aspect("equal")
         ax.set_title(f"{name}: plans (seed 1)")
         ax.legend(fontsize=7)
-        path = folder / f"compare-paths-{name}.svg"
-        fig.savefig(path, format="svg")
-        plt.close(fig)
-        written.append(str(path))
+        written.append(save_svg(fig, folder / f"compare-paths-{name}.svg"))
     for metric in ("normalization_index", "plan_time_ms", "track_mean_dev_m"):
         fams = sorted({r["family"] for r in rows})
         fig, axes = plt.subplots(1, len(fams), figsize=(4 * len(fams), 4), squeeze=False)
         for ax, fam in zip(axes[0], fams, strict=True):
             pls = sorted({r["planner"] for r in rows if r["family"] == fam})
-            data = [[r[metric] for r in rows if r["family"] == fam and r["planner"] == p
-                     and r["success"] and r.get(metric) is not None] or [float("nan")]
-                    for p in pls]
-            ax.boxplot(data)
-            ax.set_xticks(range(1, len(pls) + 1), pls, rotation=60, fontsize=7)
-            ax.set_title(f"{fam}: {metric}")
+            box_plot(ax, [[r[metric] for r in rows if r["family"] == fam and r["planner"] == p
+                           and r["success"] and r.get(metric) is not None] for p in pls],
+                     pls, f"{fam}: {metric}", rotation=60, fontsize=7)
             if metric == "plan_time_ms":
                 ax.set_yscale("log")
         fig.tight_layout()
-        path = folder / f"compare-box-{metric}.svg"
-        fig.savefig(path, format="svg")
-        plt.close(fig)
-        written.append(str(path))
+        written.append(save_svg(fig, folder / f"compare-box-{metric}.svg"))
     return written

@@ -258,7 +258,7 @@ def run_episode(scenario: Scenario, plan: dict[str, Any], traffic: Traffic, poli
                 try:
                     problem, _ = replan_scenario(scenario, a, targets, max(math.hypot(
                         bs.vx, bs.vy), 0.5), lead_s=SWAP_LEAD_S, seed=replans + 1)
-                    new = plan_scenario(problem)
+                    new = plan_scenario(problem).to_document()
                 except (NoFeasiblePlan, ReplanImpossible, ValueError):
                     failed += 1
                     continue
@@ -325,7 +325,7 @@ def run_live_bench(episodes: int = 50, seed: int = 1000,
         ship_speed = float(rng.uniform(1.0, 2.0))
         scenario = episode_scenario(rng, ship_speed)
         try:
-            plan = plan_scenario(scenario, seed=1)
+            plan = plan_scenario(scenario, seed=1).to_document()
         except NoFeasiblePlan:
             skipped += 1
             continue

@@ -125,7 +125,8 @@ def _plan(scenario_json: dict[str, Any], planner: str, seed: int, iterations: in
         plan = finish_plan(sc, pts, f"ompl:{planner}", seed, cruise, time.perf_counter() - t0)
     except NoFeasiblePlan as exc:
         return {"success": False, "error": str(exc)}
-    return {"success": True, "plan": plan, "plan_time_ms": (time.perf_counter() - t0) * 1000}
+    return {"success": True, "plan": plan.to_document(),
+            "plan_time_ms": (time.perf_counter() - t0) * 1000}
 
 
 if __name__ == "__main__":

@@ -21,6 +21,7 @@ import numpy as np
 from usvstation.bench.checker import check_plan
 from usvstation.bench.deap_baseline import run_deap
 from usvstation.bench.pymoo_baseline import run_pymoo
+from usvstation.bench.render import markdown_table
 from usvstation.bench.scenarios import (
     HIDDEN_FAMILIES,
     crossing_ships,
@@ -34,6 +35,7 @@ from usvstation.planning.iga import _foundation, run_iga
 from usvstation.planning.plan import NoFeasiblePlan, plan_scenario, replan_from
 from usvstation.planning.problem import Problem
 from usvstation.planning.validate import plan_violations
+from usvstation.records import PlanDocument
 from usvstation.scenario import (
     Scenario,
     bundled_scenario_dir,
@@ -141,14 +143,14 @@ def bench_replan(scenarios: list[Scenario], instants: int) -> dict[str, Any]:
     rng = np.random.default_rng(7)
     times, valid, tried, failures = [], 0, 0, []
     for scenario in scenarios:
-        plan = plan_scenario(scenario, seed=1)
+        plan = plan_scenario(scenario, seed=1).to_document()
         duration = plan["waypoints"][-1]["t"]
         for t in rng.uniform(0.0, 0.8 * duration, size=instants):
             x, y, h, v = boat_state_at(plan, float(t))
             tried += 1
             t0 = time.perf_counter()
             try:
-                again = replan_from(scenario, x, y, h, v, float(t), seed=1)
+                again = replan_from(scenario, x, y, h, v, float(t), seed=1).to_document()
             except (NoFeasiblePlan, ValueError) as exc:
                 times.append(time.perf_counter() - t0)
                 failures.append(f"{scenario.name} t={t:.1f}: {str(exc)[:100]}")
@@ -272,10 +274,12 @@ def machine_info() -> dict[str, Any]:
     }
 
 
-def timed_plan(scenario: Scenario, seed: int, **overrides: Any) -> tuple[float, dict | None]:
+def timed_plan(scenario: Scenario, seed: int, **overrides: Any
+               ) -> tuple[float, PlanDocument | None]:
+    """Plan time and the plan, in the stable format the bench's checker reads."""
     t0 = time.perf_counter()
     try:
-        plan = plan_scenario(scenario, seed=seed, **overrides)
+        plan: PlanDocument | None = plan_scenario(scenario, seed=seed, **overrides).to_document()
     except NoFeasiblePlan:
         plan = None
     return time.perf_counter() - t0, plan
@@ -433,75 +437,65 @@ def render_markdown(r: dict[str, Any]) -> str:
         f"Command: `{r['command']}`; machine: {m['cpu']}, {m['cores']} cores, Python "
         f"{m['python']}, NumPy {m['numpy']}; date {m['date']}.",
         "",
-        "| scenario | median plan time (ms) | all seeds (ms) | valid | fitness | Fit_d | Fit_T (s) "
-        "| Fit_ang | Fit_mal (m) | length (m) | duration (s) | clearance (m) | generations |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
-    for s in r["scenarios"]:
-        lines.append(
-            f"| {s['scenario']} | {s['plan_time_ms_median']} | "
-            f"{', '.join(f'{t:.0f}' for t in s['plan_time_ms'])} | {s['valid']}/{s['seeds']} | "
-            f"{s['fitness']} | {s['fit_d']} | {s['fit_t']} | {s['fit_ang']} | {s['fit_mal']} | "
-            f"{s['length_m']} | {s['duration_s']} | {s['min_clearance_m']} | {s['generations']} |"
-        )
+    lines += markdown_table(
+        ["scenario", "median plan time (ms)", "all seeds (ms)", "valid", "fitness", "Fit_d",
+         "Fit_T (s)", "Fit_ang", "Fit_mal (m)", "length (m)", "duration (s)", "clearance (m)",
+         "generations"],
+        ([s["scenario"], s["plan_time_ms_median"],
+          ", ".join(f"{t:.0f}" for t in s["plan_time_ms"]), f"{s['valid']}/{s['seeds']}",
+          s["fitness"], s["fit_d"], s["fit_t"], s["fit_ang"], s["fit_mal"], s["length_m"],
+          s["duration_s"], s["min_clearance_m"], s["generations"]] for s in r["scenarios"]))
     if "suite_plan_time_ms_median" in r:
         lines += ["", f"Median plan time over the whole suite (every scenario and seed): "
                       f"{r['suite_plan_time_ms_median']} ms."]
     ab = r["ablation"]
-    lines += ["", f"Ablations (means over seeds {ab['seeds']}). Table 2 form (IGA vs EG3):", "",
-              "| case | Fit_ang IGA | Fit_ang EG3 | Fit_mal IGA | Fit_mal EG3 | EG3 valid |",
-              "|---|---|---|---|---|---|"]
-    for t in ab["table2"]:
-        lines.append(f"| {t['case']} | {t['fit_ang_iga']} | {t['fit_ang_eg3']} | "
-                     f"{t['fit_mal_iga']} | {t['fit_mal_eg3']} | {t['valid_eg3']} |")
+    lines += ["", f"Ablations (means over seeds {ab['seeds']}). Table 2 form (IGA vs EG3):", ""]
+    lines += markdown_table(
+        ["case", "Fit_ang IGA", "Fit_ang EG3", "Fit_mal IGA", "Fit_mal EG3", "EG3 valid"],
+        ([t["case"], t["fit_ang_iga"], t["fit_ang_eg3"], t["fit_mal_iga"], t["fit_mal_eg3"],
+          t["valid_eg3"]] for t in ab["table2"]))
     lines += ["", "Table 3 form (time, s; `to 98 %`: until 98 % of the IGA's fitness, "
-              "stall rule off, reached/runs):", "",
-              "| case | IGA | EG2 | EG4 | gens IGA | gens EG2 | gens EG4 | to 98 % IGA | "
-              "to 98 % EG2 | to 98 % EG4 |", "|---|---|---|---|---|---|---|---|---|---|"]
+              "stall rule off, reached/runs):", ""]
     n = len(ab["seeds"])
-    for t in ab["table3"]:
-        lines.append(
-            f"| {t['case']} | {t['time_iga_s']} | {t['time_eg2_s']} | {t['time_eg4_s']} | "
-            f"{t['generations_iga']} | {t['generations_eg2']} | {t['generations_eg4']} | "
-            f"{t['to_target_time_iga_s']} ({t['to_target_reached_iga']}/{n}) | "
-            f"{t['to_target_time_eg2_s']} ({t['to_target_reached_eg2']}/{n}) | "
-            f"{t['to_target_time_eg4_s']} ({t['to_target_reached_eg4']}/{n}) |")
-    lines += ["", "Table 4 form:", "",
-              "| case | Fit_ang IGA/EG2/EG4 | Fit_mal IGA/EG2/EG4 | Fit_d IGA/EG2/EG4 | "
-              "Fit_T IGA/EG2/EG4 |", "|---|---|---|---|---|"]
-    for t in ab["table4"]:
-        cells = [" / ".join(str(t[f"{term}_{v}"]) for v in ("iga", "eg2", "eg4"))
-                 for term in ("fit_ang", "fit_mal", "fit_d", "fit_t")]
-        lines.append(f"| {t['case']} | " + " | ".join(cells) + " |")
-    lines += ["", "EG1 (no preheating), elite-group mean fitness as in Fig. 15:", "",
-              "| case | initial IGA | initial EG1 | gen 20 IGA | gen 20 EG1 | final IGA | "
-              "final EG1 | gens IGA | gens EG1 | time IGA (s) | time EG1 (s) |",
-              "|---|---|---|---|---|---|---|---|---|---|---|"]
-    for t in ab["eg1_preheating"]:
-        lines.append(
-            f"| {t['case']} | {t['elite_initial_iga']} | {t['elite_initial_eg1']} | "
-            f"{t['elite_gen20_iga']} | {t['elite_gen20_eg1']} | {t['fitness_iga']} | "
-            f"{t['fitness_eg1']} | {t['generations_iga']} | {t['generations_eg1']} | "
-            f"{t['time_iga_s']} | {t['time_eg1_s']} |")
+    lines += markdown_table(
+        ["case", "IGA", "EG2", "EG4", "gens IGA", "gens EG2", "gens EG4", "to 98 % IGA",
+         "to 98 % EG2", "to 98 % EG4"],
+        ([t["case"], t["time_iga_s"], t["time_eg2_s"], t["time_eg4_s"], t["generations_iga"],
+          t["generations_eg2"], t["generations_eg4"],
+          *(f"{t[f'to_target_time_{v}_s']} ({t[f'to_target_reached_{v}']}/{n})"
+            for v in ("iga", "eg2", "eg4"))] for t in ab["table3"]))
+    lines += ["", "Table 4 form:", ""]
+    lines += markdown_table(
+        ["case", "Fit_ang IGA/EG2/EG4", "Fit_mal IGA/EG2/EG4", "Fit_d IGA/EG2/EG4",
+         "Fit_T IGA/EG2/EG4"],
+        ([t["case"], *(" / ".join(str(t[f"{term}_{v}"]) for v in ("iga", "eg2", "eg4"))
+                       for term in ("fit_ang", "fit_mal", "fit_d", "fit_t"))]
+         for t in ab["table4"]))
+    lines += ["", "EG1 (no preheating), elite-group mean fitness as in Fig. 15:", ""]
+    lines += markdown_table(
+        ["case", "initial IGA", "initial EG1", "gen 20 IGA", "gen 20 EG1", "final IGA",
+         "final EG1", "gens IGA", "gens EG1", "time IGA (s)", "time EG1 (s)"],
+        ([t["case"], t["elite_initial_iga"], t["elite_initial_eg1"], t["elite_gen20_iga"],
+          t["elite_gen20_eg1"], t["fitness_iga"], t["fitness_eg1"], t["generations_iga"],
+          t["generations_eg1"], t["time_iga_s"], t["time_eg1_s"]]
+         for t in ab["eg1_preheating"]))
     b = r["baseline"]
     lines += ["", f"General GA library baseline ({b['library']}, same encoding and fitness, "
-              f"until the IGA's fitness or {b['max_generations']} generations):", "",
-              "| scenario | seed | library | init | IGA time (s) | library time (s) | time ratio | "
-              "IGA fitness | library fitness | fitness ratio | library gens |",
-              "|---|---|---|---|---|---|---|---|---|---|---|"]
-    for x in b["runs"]:
-        lines.append(
-            f"| {x['scenario']} | {x['seed']} | {x.get('library', 'deap')} | {x['deap_init']} | "
-            f"{x['iga_time_s']} | "
-            f"{x['deap_time_s']} | {x['time_ratio']} | {x['iga_fitness']} | {x['deap_fitness']} | "
-            f"{x['fitness_ratio']} | {x['deap_generations']} |")
+              f"until the IGA's fitness or {b['max_generations']} generations):", ""]
+    lines += markdown_table(
+        ["scenario", "seed", "library", "init", "IGA time (s)", "library time (s)",
+         "time ratio", "IGA fitness", "library fitness", "fitness ratio", "library gens"],
+        ([x["scenario"], x["seed"], x.get("library", "deap"), x["deap_init"], x["iga_time_s"],
+          x["deap_time_s"], x["time_ratio"], x["iga_fitness"], x["deap_fitness"],
+          x["fitness_ratio"], x["deap_generations"]] for x in b["runs"]))
     if "random" in r:
-        lines += ["", "Random scenarios, seed 1 (bench/scenarios.py):", "",
-                  "| kind | valid | median plan time (ms) | p90 (ms) | failures |",
-                  "|---|---|---|---|---|"]
-        for kind, x in r["random"].items():
-            lines.append(f"| {kind} | {x['valid']}/{x['count']} | {x['plan_time_ms_median']} | "
-                         f"{x['plan_time_ms_p90']} | {', '.join(x['failures']) or '-'} |")
+        lines += ["", "Random scenarios, seed 1 (bench/scenarios.py):", ""]
+        lines += markdown_table(
+            ["kind", "valid", "median plan time (ms)", "p90 (ms)", "failures"],
+            ([kind, f"{x['valid']}/{x['count']}", x["plan_time_ms_median"],
+              x["plan_time_ms_p90"], ", ".join(x["failures"]) or "-"]
+             for kind, x in r["random"].items()))
     lines += _issue12_markdown(r)
     return "\n".join(lines) + "\n"
 
@@ -511,27 +505,29 @@ def _issue12_markdown(r: dict[str, Any]) -> list[str]:
     if "hidden" in r:
         lines += ["", "Hidden families (seed 1; valid = passes the independent checker "
                   "bench/checker.py: hull clearance, first turn, speed through the water, "
-                  "timing margin):", "",
-                  "| family | planned and valid | returned but refused | clearance diff max (m) | "
-                  "median (ms) | max (ms) |", "|---|---|---|---|---|---|"]
-        for name, x in r["hidden"].items():
-            lines.append(f"| {name} | {x['planned_valid']}/{x['count']} | "
-                         f"{len(x['returned_but_refused'])} | {x['clearance_diff_max_m']} | "
-                         f"{x['plan_time_ms_median']} | {x['plan_time_ms_max']} |")
+                  "timing margin):", ""]
+        lines += markdown_table(
+            ["family", "planned and valid", "returned but refused", "clearance diff max (m)",
+             "median (ms)", "max (ms)"],
+            ([name, f"{x['planned_valid']}/{x['count']}", len(x["returned_but_refused"]),
+              x["clearance_diff_max_m"], x["plan_time_ms_median"], x["plan_time_ms_max"]]
+             for name, x in r["hidden"].items()))
     if "replan" in r:
         x = r["replan"]
         lines += ["", f"Re-plan from a boat under way: {x['valid']}/{x['instants']} valid, "
                   f"p50 {x['p50_ms']} ms, p99 {x['p99_ms']} ms."]
     if "scaling" in r:
-        lines += ["", "| obstacles | median plan time (ms) | valid |", "|---|---|---|"]
-        for n, x in r["scaling"].items():
-            lines.append(f"| {n} | {x['plan_time_ms_median']} | {x['valid']}/{x['seeds']} |")
+        lines += [""]
+        lines += markdown_table(["obstacles", "median plan time (ms)", "valid"],
+                                ([n, x["plan_time_ms_median"], f"{x['valid']}/{x['seeds']}"]
+                                 for n, x in r["scaling"].items()))
     if "robustness" in r:
-        lines += ["", "| crossing ships | timing margin (s) | planned | clear when <= 3 s off | "
-                  "clear when <= 10 s off |", "|---|---|---|---|---|"]
-        for label, x in r["robustness"].items():
-            lines.append(f"| {label} | {x['time_margin_s']} | {x['planned']}/{x['count']} | "
-                         f"{x['share_3s']} | {x['share_10s']} |")
+        lines += [""]
+        lines += markdown_table(
+            ["crossing ships", "timing margin (s)", "planned", "clear when <= 3 s off",
+             "clear when <= 10 s off"],
+            ([label, x["time_margin_s"], f"{x['planned']}/{x['count']}", x["share_3s"],
+              x["share_10s"]] for label, x in r["robustness"].items()))
     if "orderings" in r:
         lines += ["", "Paper 000's orderings on this run:", ""]
         for x in r["orderings"]:

@@ -24,9 +24,7 @@ def random_recovery(seed: int) -> Scenario:
     rng = np.random.default_rng(seed)
     vessel = Vessel()
     while True:
-        dist = rng.uniform(50.0, 140.0)
-        bearing = math.radians(rng.uniform(-45.0, 45.0))
-        sx, sy = dist * math.cos(bearing), dist * math.sin(bearing)
+        _, sx, sy = _out_at_sea(rng, 50.0, 140.0, 45.0)
         obstacles = []
         for _ in range(int(rng.integers(3, 10))):
             frac = rng.uniform(0.1, 0.9)
@@ -96,6 +94,15 @@ def random_transit(seed: int) -> Scenario:
     return parse_scenario(data)
 
 
+def _out_at_sea(rng: np.random.Generator, near: float, far: float,
+                half_angle_deg: float) -> tuple[float, float, float]:
+    """A recovery's start: `near` to `far` m from the ramp end at a bearing within
+    +-`half_angle_deg` of the ramp axis; its distance and ramp-frame x, y."""
+    dist = rng.uniform(near, far)
+    bearing = math.radians(rng.uniform(-half_angle_deg, half_angle_deg))
+    return dist, dist * math.cos(bearing), dist * math.sin(bearing)
+
+
 def _clear_of(
     obstacles: list[dict], points: list[tuple[float, float]], vessel: Vessel
 ) -> list[dict]:
@@ -146,9 +153,7 @@ def crossing_ships(seed: int) -> Scenario:
     overtaking near the direct line, timed to be there around when the boat is."""
     rng = np.random.default_rng(30_000 + seed)
     vessel = Vessel()
-    dist = rng.uniform(60.0, 140.0)
-    bearing = math.radians(rng.uniform(-30.0, 30.0))
-    sx, sy = dist * math.cos(bearing), dist * math.sin(bearing)
+    dist, sx, sy = _out_at_sea(rng, 60.0, 140.0, 30.0)
     obstacles = []
     for _ in range(int(rng.integers(1, 4))):
         frac = rng.uniform(0.25, 0.85)

@@ -394,7 +394,7 @@ def disturbed(setup: DisturbedSetup | None = None, scenarios: tuple[str, ...] = 
     rows = []
     for name in scenarios:
         scenario = scenario_for_vessel(load_scenario(name), vessel)
-        plan = plan_scenario(scenario, seed=s.seed)
+        plan = plan_scenario(scenario, seed=s.seed).to_document()
         for method in methods:
             if progress:
                 progress(f"tracking {name} with {method}")

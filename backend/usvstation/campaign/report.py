@@ -8,6 +8,7 @@ from typing import Any
 
 import numpy as np
 
+from usvstation.bench.render import box_plot, save_svg
 from usvstation.campaign.spec import CampaignError
 
 
@@ -93,16 +94,10 @@ def _plots(rows: list[dict], folder: Path) -> list[str]:
     out = []
     for metric in ("normalization_index", "plan_time_ms"):
         keys = sorted({(r["planner"], r["family"]) for r in rows})
-        data = [[r[metric] for r in rows if (r["planner"], r["family"]) == k and r["success"]]
-                or [float("nan")] for k in keys]
         fig, ax = plt.subplots(figsize=(max(6, len(keys) * 0.6), 4))
-        ax.boxplot(data)
-        ax.set_xticks(range(1, len(keys) + 1), [f"{p}\n{f}" for p, f in keys], rotation=70,
-                      fontsize=6)
-        ax.set_title(metric)
+        box_plot(ax, [[r[metric] for r in rows if (r["planner"], r["family"]) == k and r["success"]]
+                      for k in keys],
+                 [f"{p}\n{f}" for p, f in keys], metric, rotation=70, fontsize=6)
         fig.tight_layout()
-        p = folder / f"report-{metric}.svg"
-        fig.savefig(p, format="svg")
-        plt.close(fig)
-        out.append(str(p))
+        out.append(save_svg(fig, folder / f"report-{metric}.svg"))
     return out

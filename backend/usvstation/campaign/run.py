@@ -70,13 +70,13 @@ def run_episode(ep: dict[str, Any]) -> dict[str, Any]:
                 "normalization_index": None, "duration_s": None, "min_clearance_m": None,
                 "total_turn_deg": None, "max_turn_deg": None, "waypoints": 0,
                 "plan_time_ms": (time.perf_counter() - t0) * 1000.0, "replans": 0}
-    pts = np.array([[w["x"], w["y"]] for w in plan["waypoints"]])
+    pts = np.array([[w.x, w.y] for w in plan.waypoints])
     pm = path_metrics(pts)
-    m = plan["metrics"]
+    m = plan.metrics
     return {**row, "success": True, "error": None, "length_m": pm["length_m"],
-            "normalization_index": pm["normalization_index"], "duration_s": m["duration_s"],
-            "min_clearance_m": m["min_clearance_m"], "total_turn_deg": pm["total_turn_deg"],
-            "max_turn_deg": pm["max_turn_deg"], "waypoints": len(plan["waypoints"]),
+            "normalization_index": pm["normalization_index"], "duration_s": m.duration_s,
+            "min_clearance_m": m.min_clearance_m, "total_turn_deg": pm["total_turn_deg"],
+            "max_turn_deg": pm["max_turn_deg"], "waypoints": len(plan.waypoints),
             "plan_time_ms": (time.perf_counter() - t0) * 1000.0,
             "replans": int(m.get("replans", 0))}
 

@@ -17,7 +17,7 @@ import numpy as np
 
 from usvstation.dynamics.environment import Environment
 from usvstation.dynamics.params import VesselParams
-from usvstation.geometry import wrap_angle
+from usvstation.geometry import Pose, wrap_angle
 
 MAX_STEP = 0.05  # s: the model is integrated at 20 Hz or faster
 
@@ -31,16 +31,13 @@ class ThrustCommand:
 
 
 @dataclass(frozen=True)
-class VesselState:
+class VesselState(Pose):
     """Pose in the ramp frame and velocities over ground in the body frame.
 
     x, y (m); psi heading (rad, anticlockwise from +x); u surge, v sway (m/s,
     v to port); r yaw rate (rad/s, anticlockwise); t (s).
     """
 
-    x: float
-    y: float
-    psi: float
     u: float = 0.0
     v: float = 0.0
     r: float = 0.0

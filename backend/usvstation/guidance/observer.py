@@ -31,31 +31,27 @@ import math
 from dataclasses import dataclass
 
 from usvstation.dynamics.params import VesselParams
+from usvstation.geometry import Pose, require_finite
 
 TURN_MEMORY = 3.0  # s, decay of the peak-held yaw rate that gates the update
 SLIP_SPEED = 1.5  # m/s, speed over ground from which a turn's slip gates fully
 
 
 @dataclass(frozen=True)
-class Measurement:
+class Measurement(Pose):
     """One navigation fix: what a boat's sensors give (SI units, ramp frame).
 
     x, y GNSS position (m); sog speed over ground (m/s); cog course over
     ground (rad); psi heading (rad); r yaw rate (rad/s); t (s).
     """
 
-    x: float
-    y: float
-    psi: float
     sog: float = 0.0
     cog: float = 0.0
     r: float = 0.0
     t: float = 0.0
 
     def __post_init__(self) -> None:
-        for name in ("x", "y", "psi", "sog", "cog", "r", "t"):
-            if not math.isfinite(getattr(self, name)):
-                raise ValueError(f"measurement: {name} must be finite (got {getattr(self, name)})")
+        require_finite(self, "measurement")
 
     @classmethod
     def of(cls, state, dx: float = 0.0, dy: float = 0.0, dpsi: float = 0.0) -> Measurement:

@@ -19,13 +19,12 @@ every `ramp_pose_period_s` with its instant mapped to the boat's uptime through 
 
 from __future__ import annotations
 
-import math
 import random
 from collections import Counter, deque
 from dataclasses import dataclass, field
 from typing import Any
 
-from usvstation.geometry import CDEG, CM, E7, MS
+from usvstation.geometry import CDEG, CM, E7, MS, require_finite
 from usvstation.link import wire
 from usvstation.link.mavlink import usv_recovery as mav
 from usvstation.link.mission import Mission, MissionItem
@@ -141,9 +140,7 @@ class RampPoseSample:
     yaw_rate: float = 0.0
 
     def __post_init__(self) -> None:
-        for name in ("t", "lat", "lon", "bearing_deg", "vn", "ve", "yaw_rate"):
-            if not math.isfinite(getattr(self, name)):
-                raise ValueError(f"ramp pose: {name} must be finite, got {getattr(self, name)}")
+        require_finite(self, "ramp pose")
         if not (-90.0 <= self.lat <= 90.0 and -180.0 <= self.lon <= 180.0):
             raise ValueError(f"ramp pose: lat, lon out of range: {self.lat}, {self.lon}")
 
@@ -164,21 +161,32 @@ class LinkDown:
 
 
 @dataclass(frozen=True)
-class BoatReport:
+class Received:
+    """A report the boat sent, stamped with the station time it arrived (`received_at`)."""
+
+    received_at: float = field(kw_only=True)
+
+
+@dataclass(frozen=True)
+class BoatReport(Received):
+    """USV_MISSION_STATE: the boat's mission, its state and its clock."""
+
     report: MissionState
-    received_at: float
+
+
+@dataclass(frozen=True)
+class TelemetryReceived(Received):
+    """GLOBAL_POSITION_INT with the latest of the boat's other reports."""
+
+    telemetry: Telemetry
 
 
 @dataclass(frozen=True)
 class BoatRebooted:
+    """The boot id in the boat's mission report changed: it restarted (clock sync is reset)."""
+
     old_boot_id: int
     new_boot_id: int
-
-
-@dataclass(frozen=True)
-class TelemetryReceived:
-    telemetry: Telemetry
-    received_at: float
 
 
 @dataclass(frozen=True)
@@ -741,10 +749,10 @@ class StationProtocol:
                 self._reports.clear()
             self.report, self.report_at = rep, now
             self._reports.append(rep)
-            events.append(BoatReport(rep, now))
+            events.append(BoatReport(rep, received_at=now))
         elif kind == "GLOBAL_POSITION_INT":
             self.telemetry = self._telemetry(msg)
-            events.append(TelemetryReceived(self.telemetry, now))
+            events.append(TelemetryReceived(self.telemetry, received_at=now))
         elif kind == "COMMAND_ACK":
             if msg.target_system in (0, self.config.station_id):
                 events += self.commands.handle(msg)

@@ -1,9 +1,10 @@
-"""Plan a scenario and build the stable plan output (shared/DESIGN.md "Plan output")."""
+"""Plan a scenario with the IGA and build its typed `Plan` (planning/model.py)."""
 
 from __future__ import annotations
 
 import math
 import time
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -14,6 +15,7 @@ from usvstation.planning.encoding import GeneLayout, InfeasibleProblem
 from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.planning.iga import IGAResult, run_iga
 from usvstation.planning.limits import check_memory
+from usvstation.planning.model import Plan, PlanMetrics, SmoothedPath, Waypoint
 from usvstation.planning.problem import Problem, sweep_moving
 from usvstation.planning.smoothing import smooth_path
 from usvstation.planning.start import Prefix, needs_prefix, prefixes, start_state
@@ -28,8 +30,8 @@ MIN_WATER_M = 0.05  # least water between hull and obstacle a plan may keep, m
 
 def plan_scenario(
     scenario: Scenario, planner: str = "iga", seed: int | None = None, **overrides: Any
-) -> dict[str, Any]:
-    """Plan `scenario`; return the stable plan dict or raise NoFeasiblePlan.
+) -> Plan:
+    """Plan `scenario`; return the plan or raise NoFeasiblePlan.
 
     Every plan returned has passed the exact validator (`plan_violations`):
     true hull clearance, first turn, speed through the water, timing margin.
@@ -71,18 +73,14 @@ def plan_scenario(
                 continue
             if result.feasible:
                 plan = build_plan(scenario, problem, opts, result, prefix)
-                bad = plan_violations(plan, scenario)
+                bad = plan_violations(plan.to_document(), scenario)
                 if not bad:
                     full = margin == clearance_margins(scenario, False)[0][0]
-                    plan["metrics"]["inflation_m"] = _r(margin)
-                    plan["metrics"]["margin_kept"] = full
-                    plan["warnings"] = [warning] if warning else []
-                    if plan.pop("_smooth_warning", None):
-                        plan["warnings"].append(
-                            "smoothed path dropped: it would bring the hull too close to an "
-                            "obstacle; follow the waypoints")
+                    plan = plan.with_metrics(inflation_m=_r(margin), margin_kept=full)
+                    if warning:  # the margin's warning comes first
+                        plan = replace(plan, warnings=(warning, *plan.warnings))
                     if result.stop_reason == "time_budget":
-                        plan["warnings"].append(
+                        plan = plan.warned(
                             f"time budget of {opts.time_budget_s:g} s reached: best plan so far")
                     return plan
                 reasons.append("the exact check refused the best path: " + bad[0])
@@ -103,7 +101,7 @@ def plan_scenario(
 def replan_from(
     scenario: Scenario, x: float, y: float, heading_deg: float, speed: float, t: float,
     planner: str = "iga", seed: int | None = None, **overrides: Any,
-) -> dict[str, Any]:
+) -> Plan:
     """Plan from a boat under way (ramp frame position, hull heading, speed through the water)
     at `t` s after the scenario's t = 0: obstacles are propagated to that instant (eq. 8)
     and the plan's t = 0 is that instant."""
@@ -134,8 +132,9 @@ def clearance_margins(scenario: Scenario, fallback: bool) -> list[tuple[float, s
 def build_plan(
     scenario: Scenario, problem: Problem, opts: IGAOptions, result: IGAResult,
     prefix: Prefix | None = None,
-) -> dict[str, Any]:
-    """Waypoints in the scenario frame plus metrics, in the stable plan format.
+) -> Plan:
+    """Waypoints in the scenario frame plus metrics, the encoding and the history; the
+    smoothed path when it keeps clear, else a warning that it was dropped.
 
     `heading_deg` is the hull heading leaving each waypoint (through the
     water, so it crabs into a current), `course_deg` the course over ground.
@@ -154,39 +153,36 @@ def build_plan(
     hull = np.arctan2(v * np.sin(course) - cy, v * np.cos(course) - cx)
     course_deg = np.degrees(course) % 360.0
     heading_deg = np.degrees(hull) % 360.0
-    waypoints = [
-        {"x": _r(x), "y": _r(y), "t": _r(tt), "speed": _r(vv), "heading_deg": _r(h),
-         "course_deg": _r(c)}
+    waypoints = tuple(
+        Waypoint(_r(x), _r(y), _r(tt), _r(vv), _r(h), _r(c))  # type: ignore[arg-type]
         for x, y, tt, vv, h, c in zip(xs, ys, t, v, heading_deg, course_deg, strict=True)
-    ]
+    )
     row = ev.row(0)
-    plan: dict[str, Any] = {
-        "planner": "iga",
-        "scenario": scenario.name,
-        "seed": opts.seed,
-        "waypoints": waypoints,
-        "metrics": {
-            "fitness": _r(row["fitness"]),
-            "fit_d": _r(row["fit_d"]),
-            "fit_t": _r(row["fit_t"]),
-            "fit_mal": _r(row["fit_mal"]),
-            "fit_ang": _r(row["fit_ang"]),
-            "fit_t_norm": _r(row["fit_t_norm"]),
-            "fit_mal_norm": _r(row["fit_mal_norm"]),
-            "terms": opts.terms,
-            "length_m": _r(float(np.hypot(np.diff(xs), np.diff(ys)).sum())),
-            "duration_s": _r(float(t[-1])),
-            "min_clearance_m": None,
-            "collision_free": bool(row["g_col"]),
-            "generations": result.generations,
-            "elapsed_s": round(result.elapsed_s, 6),
-            "stop_reason": result.stop_reason,
-            "evaluations": result.evaluations,
-            "max_turn_deg": _r(_max_turn_deg(seg_heading)),
-            "arrival_heading_deg": _r(float(course_deg[-1])),
-            "time_margin_s": scenario.vessel.time_margin_s,
-            "prefix_legs": 0 if prefix is None else prefix.legs,
-        },
+    clearance = _r(hull_clearance({"waypoints": [w.to_document() for w in waypoints]},
+                                  scenario))
+    metrics = PlanMetrics({
+        "fitness": _r(row["fitness"]),
+        "fit_d": _r(row["fit_d"]),
+        "fit_t": _r(row["fit_t"]),
+        "fit_mal": _r(row["fit_mal"]),
+        "fit_ang": _r(row["fit_ang"]),
+        "fit_t_norm": _r(row["fit_t_norm"]),
+        "fit_mal_norm": _r(row["fit_mal_norm"]),
+        "terms": opts.terms,
+        "length_m": _r(float(np.hypot(np.diff(xs), np.diff(ys)).sum())),
+        "duration_s": _r(float(t[-1])),
+        "min_clearance_m": clearance,
+        "collision_free": bool(row["g_col"]),
+        "generations": result.generations,
+        "elapsed_s": round(result.elapsed_s, 6),
+        "stop_reason": result.stop_reason,
+        "evaluations": result.evaluations,
+        "max_turn_deg": _r(_max_turn_deg(seg_heading)),
+        "arrival_heading_deg": _r(float(course_deg[-1])),
+        "time_margin_s": scenario.vessel.time_margin_s,
+        "prefix_legs": 0 if prefix is None else prefix.legs,
+    })
+    sections = {
         "encoding": {
             "intermediate_waypoints": result.layout.n_mid,
             "bits": {
@@ -201,15 +197,16 @@ def build_plan(
             "elite_mean": [_r(f) for f in result.history_elite_mean],
         },
     }
-    plan["metrics"]["min_clearance_m"] = _r(hull_clearance(plan, scenario))
+    plan = Plan("iga", scenario.name, opts.seed, waypoints, metrics, sections=sections)
     if opts.smoothing:
         smoothed = smooth_path(xs, ys, t, hull_field(scenario))
         if smoothed["collision_free"]:
             smoothed["min_clearance_m"] = _r(hull_clearance({"waypoints": smoothed["points"]},
                                                             scenario))
-            plan["smoothed"] = smoothed
+            plan = replace(plan, smoothed=SmoothedPath.from_document(smoothed))
         else:
-            plan["_smooth_warning"] = True
+            plan = plan.warned("smoothed path dropped: it would bring the hull too close to an "
+                               "obstacle; follow the waypoints")
     return plan
 
 

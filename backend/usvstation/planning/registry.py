@@ -1,11 +1,12 @@
 """One planner interface: every planner by name, its paper and capabilities.
 
-`plan(scenario, name, seed, **options)` returns the stable plan format
-(DESIGN.md "Plan output") or raises NoFeasiblePlan; every plan has passed
+`plan_with(scenario, name, seed, **options)` returns a typed `Plan` (planning/model.py;
+`Plan.to_document()` is the stable plan format, DESIGN.md "Plan output") or raises
+NoFeasiblePlan; every plan has passed
 the independent checker (`planning.validate.plan_violations`) before it
 leaves. Options are validated per planner (one line naming the field).
 
-To add a planner: write a function `(scenario, seed, options) -> plan dict`
+To add a planner: write a function `(scenario, seed, options) -> Plan`
 that ends with `seeds.common.finish_plan` (or calls the checker itself), a
 pydantic options model, and one `PlannerInfo` entry in `PLANNERS`.
 """
@@ -15,7 +16,7 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -23,6 +24,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from usvstation.geometry import angle_diff, inflated_radius
 from usvstation.planning.errors import NoFeasiblePlan
+from usvstation.planning.model import Plan
 from usvstation.planning.seeds.common import (
     World,
     cruise_speed,
@@ -50,7 +52,7 @@ class PlannerInfo:
     title: str
     capabilities: tuple[str, ...]
     options: type[BaseModel]
-    run: Callable[[Scenario, int, Any], dict[str, Any]]
+    run: Callable[[Scenario, int, Any], Plan]
 
     def describe(self) -> dict[str, Any]:
         """The `GET /api/planners` entry: {name, paper, title, capabilities}."""
@@ -77,7 +79,7 @@ class RRTStarOptions(SeedOptions):
 def _drive(scenario: Scenario, seed: int, opts: SeedOptions, name: str,
            core: Callable[[Scenario, World, np.ndarray, float, np.random.Generator], tuple],
            speeds_from: dict[str, Any] | None = None, static_only: bool = False
-           ) -> dict[str, Any]:
+           ) -> Plan:
     """Common attempt loop: gate (recovery), seed, clearance; first plan passing the checker.
 
     A planner whose paper knows only static obstacles (`static_only`) plans
@@ -113,8 +115,8 @@ def _drive(scenario: Scenario, seed: int, opts: SeedOptions, name: str,
             if plan is None:
                 continue
             if margin < margins[0]:
-                plan["warnings"].append(f"reduced clearance: planned with {margin:g} m "
-                                        f"instead of eq. 7's {margins[0]:g} m")
+                plan = plan.warned(f"reduced clearance: planned with {margin:g} m "
+                                   f"instead of eq. 7's {margins[0]:g} m")
             return plan
     raise NoFeasiblePlan(f"no feasible plan: {name}: {last}")
 
@@ -159,7 +161,7 @@ def _obstacle_models(scenario: Scenario, world: World, target: np.ndarray, cruis
 def _finish_attempt(scenario: Scenario, route: np.ndarray, extra: Any, gate: np.ndarray | None,
                     speeds_from: dict[str, Any] | None, name: str, seed: int, cruise: float,
                     t0: float, opts: SeedOptions, attempt: int, margin: float, model: str,
-                    last: str) -> tuple[dict[str, Any] | None, str]:
+                    last: str) -> tuple[Plan | None, str]:
     """The plan of one route (run-in appended, checked), or None and the checker's reason."""
     speeds = None
     routes = [route]
@@ -181,8 +183,7 @@ def _finish_attempt(scenario: Scenario, route: np.ndarray, extra: Any, gate: np.
         except NoFeasiblePlan as exc:
             last = str(exc).removeprefix("no feasible plan: ").removeprefix(f"{name}: ")
             continue
-        plan["metrics"]["elapsed_s"] = round(time.perf_counter() - t0, 6)
-        return plan, last
+        return plan.with_metrics(elapsed_s=round(time.perf_counter() - t0, 6)), last
     return None, last
 
 
@@ -217,18 +218,18 @@ def _rrt_family(kind: str) -> Callable[[Scenario, int, RRTStarOptions], dict[str
         return path, {"tree_path_length_m": round(raw_len, 6), "step_m": round(step, 6),
                       "iterations": o.iterations}
 
-    def run(sc: Scenario, seed: int, o: RRTStarOptions) -> dict[str, Any]:
+    def run(sc: Scenario, seed: int, o: RRTStarOptions) -> Plan:
         name = {"rrt": "rrt-star", "bspline": "bspline-rrt-star", "vpf": "vpf-rrt-star"}[kind]
         return _drive(sc, seed, o, name, lambda *a: core(*a, o), static_only=True)
 
     return run
 
 
-def _run_iga(scenario: Scenario, seed: int, options: Any) -> dict[str, Any]:
+def _run_iga(scenario: Scenario, seed: int, options: Any) -> Plan:
     from usvstation.planning.plan import plan_scenario
 
     plan = plan_scenario(scenario, planner="iga", seed=seed, **options)
-    bad = plan_violations(plan, scenario)
+    bad = plan_violations(plan.to_document(), scenario)
     if bad:
         raise NoFeasiblePlan(f"no feasible plan: iga: {bad[0]}")
     return plan
@@ -275,7 +276,7 @@ class PlannerOptionError(ValueError):
 
 
 def plan_with(scenario: Scenario, name: str = "iga", seed: int | None = None,
-         **options: Any) -> dict[str, Any]:
+         **options: Any) -> Plan:
     """Plan with the named planner; the plan has passed the independent checker."""
     info = PLANNERS.get(name)
     if info is None:
@@ -305,14 +306,15 @@ class ColregsGAOptions(SeedOptions):
     mode: str = Field("station", pattern="^(station|paper)$")
 
 
-def _run_colregs_ga(sc: Scenario, seed: int, o: ColregsGAOptions) -> dict[str, Any]:
+def _run_colregs_ga(sc: Scenario, seed: int, o: ColregsGAOptions) -> Plan:
     import math
 
-    from usvstation.planning.seeds.colregs_ga import GAStepOptions, plan_colregs_ga
+    from usvstation.planning.seeds.colregs_ga import PAPER_001_GA, GAStepOptions, plan_colregs_ga
 
     paper = o.mode == "paper"
     go = GAStepOptions(
-        population=o.population, generations=300 if paper else o.generations,
+        ga=replace(PAPER_001_GA, population=o.population),
+        generations=300 if paper else o.generations,
         stall=20 if paper else o.stall_generations,
         yaw_rate_max_deg=5.0 if paper else o.yaw_rate_max_deg,
         d_ca=o.d_ca_m, risk_scale_m=o.risk_scale_m, improved=o.improved, paper_fitness=paper)
@@ -344,11 +346,18 @@ class ReplanGAOptions(SeedOptions):
     unsafe_range_m: float = Field(100.0, gt=0.0)
 
 
-def _run_replan_ga(sc: Scenario, seed: int, o: ReplanGAOptions) -> dict[str, Any]:
-    from usvstation.planning.seeds.replan_ga import ReplanOptions, plan_replan
+def _run_replan_ga(sc: Scenario, seed: int, o: ReplanGAOptions) -> Plan:
+    from usvstation.planning.seeds.replan_ga import (
+        PAPER_002_GA,
+        Replanning,
+        ReplanOptions,
+        plan_replan,
+    )
 
-    ro = ReplanOptions(population=o.population, generations_global=o.generations_global,
-                       generations_local=o.generations_local, unsafe_range_m=o.unsafe_range_m)
+    ro = ReplanOptions(ga=replace(PAPER_002_GA, population=o.population),
+                       generations_global=o.generations_global,
+                       generations_local=o.generations_local,
+                       replanning=Replanning(unsafe_range_m=o.unsafe_range_m))
 
     def core(s: Scenario, world: World, target: np.ndarray, cruise: float,
              rng: np.random.Generator) -> tuple:
@@ -367,7 +376,7 @@ class DEAPFOptionsModel(SeedOptions):
     kappa: str = Field("paper", pattern="^(paper|chord)$")
 
 
-def _run_de_apf(sc: Scenario, seed: int, o: DEAPFOptionsModel) -> dict[str, Any]:
+def _run_de_apf(sc: Scenario, seed: int, o: DEAPFOptionsModel) -> Plan:
     from usvstation.planning.seeds.de_apf import DEAPFOptions, plan_de_apf
 
     def core(s: Scenario, world: World, target: np.ndarray, cruise: float,

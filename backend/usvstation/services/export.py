@@ -15,6 +15,7 @@ from collections.abc import Iterator
 from xml.sax.saxutils import escape
 
 from usvstation.geo import RampFrame
+from usvstation.planning.model import Plan
 from usvstation.records import PlanJob, RoutePoint, RunRow, StoredTelemetryRow
 from usvstation.store.db import TELEMETRY_COLUMNS
 
@@ -29,17 +30,17 @@ COLUMNS = ("id", *TELEMETRY_COLUMNS)
 
 def planned_route(plan_job: PlanJob | None) -> list[RoutePoint]:
     """The plan's waypoints with lat/lon (empty when there is no plan or no origin)."""
-    plan = plan_job["plan"] if plan_job else None
+    document = plan_job["plan"] if plan_job else None
     origin = plan_job["scenario"].get("origin") if plan_job else None
-    if plan is None or not isinstance(origin, dict):
+    if document is None or not isinstance(origin, dict):
         return []
     frame = RampFrame(origin["lat"], origin["lon"], origin["ramp_bearing_deg"])
     out: list[RoutePoint] = []
-    for i, w in enumerate(plan["waypoints"]):
-        lat, lon = frame.to_geodetic(w["x"], w["y"])
-        out.append({"index": i, "lat": float(lat), "lon": float(lon), "t": w["t"],
-                    "speed": w["speed"],
-                    "heading_deg": float(frame.heading_to_compass_deg(w["heading_deg"]))})
+    for i, w in enumerate(Plan.from_document(document).waypoints):
+        lat, lon = frame.to_geodetic(w.x, w.y)
+        out.append({"index": i, "lat": float(lat), "lon": float(lon), "t": w.t,
+                    "speed": w.speed,
+                    "heading_deg": float(frame.heading_to_compass_deg(w.heading_deg))})
     return out
 
 

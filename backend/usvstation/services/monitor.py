@@ -24,6 +24,7 @@ from typing import cast
 import numpy as np
 
 from usvstation.geometry import MS
+from usvstation.planning.model import Plan
 from usvstation.records import (
     Alert,
     MonitorAssessment,
@@ -147,11 +148,10 @@ class MonitorService:
         """Monitor `job`'s plan from the next frame on (a new run, or a swapped re-plan)."""
         self.run = run
         self.scenario = parse_scenario(job["scenario"])
-        plan = job["plan"]
-        if plan is None:
+        if job["plan"] is None:
             raise ValueError(f"plan {job['id']} is {job['status']}: nothing to monitor")
-        wps = plan["waypoints"]
-        self.waypoints = np.array([[w["x"], w["y"], w["t"]] for w in wps], dtype=float)
+        plan = Plan.from_document(job["plan"])
+        self.waypoints = np.array([[w.x, w.y, w.t] for w in plan.waypoints], dtype=float)
         v = self.scenario.vessel
         self.config = MonitorConfig(
             clearance_margin_m=v.length / 2.0 + v.compensation_radius,
@@ -185,8 +185,8 @@ class MonitorService:
         boat = BoatState(float(bx), float(by), float(rvx), float(rvy),
                          float(row["boat_time"]) - self.t0,
                          float(frame.compass_to_heading_deg(row["heading_deg"])))
-        targets = [TargetState(v.id, v.x, v.y, v.rvx, v.rvy, v.radius,
-                               known=v.source == "manual")
+        targets = [TargetState(v["id"], v["x"], v["y"], v["rvx"], v["rvy"], v["radius"],
+                               known=v["source"] == "manual")
                    for v in self.world.world.targets(now)]
         a = assess(self.waypoints, boat, targets, self.scenario.vessel.length, self.config,
                    (float(fvx), float(fvy)))

@@ -67,11 +67,13 @@ class WorkerDied(Exception):
 
 
 def plan_in_worker(scenario: JsonObject, planner: str, seed: int | None) -> PlanDocument:
-    """Runs in a worker process: validate and plan; NoFeasiblePlan propagates."""
+    """Runs in a worker process: validate and plan; NoFeasiblePlan propagates. The plan
+    leaves the process in the stable plan format, the form the store keeps and the API
+    serves."""
     from usvstation.planning.registry import plan_with
     from usvstation.scenario import parse_scenario
 
-    return plan_with(parse_scenario(scenario), planner, seed)
+    return plan_with(parse_scenario(scenario), planner, seed).to_document()
 
 
 def die_with_parent(station_pid: int) -> None:

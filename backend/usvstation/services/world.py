@@ -23,7 +23,7 @@ from typing import Any
 
 from usvstation.geo import RampFrame
 from usvstation.link.protocol import RampPoseSample
-from usvstation.records import InputSource, WorldSnapshot
+from usvstation.records import InputSource, Target, WorldSnapshot
 from usvstation.scenario import Scenario
 from usvstation.scenario.ships import LeverArm
 from usvstation.services.hub import LiveHub
@@ -36,6 +36,19 @@ from usvstation.world.model import World, enu_to_compass
 log = logging.getLogger(__name__)
 PUBLISH_HZ = 2.0
 RAMP_POSE_HZ = 4.0  # at least twice a second (issue 15); the link sends at its own period
+
+
+# decimals a served target keeps (millimetres, 0.1 mm/s, 0.01 degree)
+_TARGET_DECIMALS = {"x": 3, "y": 3, "vx": 4, "vy": 4, "rvx": 4, "rvy": 4, "age_s": 3,
+                    "speed": 4, "course_deg": 2}
+
+
+def _rounded(target: Target) -> Target:
+    """The world model's target as served: positions and velocities rounded."""
+    served = target.copy()
+    for key, nd in _TARGET_DECIMALS.items():
+        served[key] = round(target[key], nd)  # type: ignore[literal-required]
+    return served
 
 
 class WorldService:
@@ -206,14 +219,7 @@ class WorldService:
                         "ramp_bearing_deg": round(pose.ramp_bearing_deg, 3),
                         "vx": float(vx), "vy": float(vy), "speed": speed, "course_deg": course,
                         "source": "own_ship" if pose.moving else "origin"}
-        targets = [
-            {"id": v.id, "source": v.source, "mmsi": v.mmsi, "name": v.name, "lat": v.lat,
-             "lon": v.lon, "x": round(v.x, 3), "y": round(v.y, 3), "vx": round(v.vx, 4),
-             "vy": round(v.vy, 4), "rvx": round(v.rvx, 4), "rvy": round(v.rvy, 4),
-             "radius": v.radius, "age_s": round(v.age_s, 3), "speed": round(v.speed, 4),
-             "course_deg": round(v.course_deg, 2)}
-            for v in self.world.targets(t)
-        ]
+        targets = [_rounded(v) for v in self.world.targets(t)]
         s = self.decoder.stats
         return {"time": utc_now(), "own_ship": own_out, "ramp": ramp_out, "targets": targets,
                 "stats": {"sentences": s.sentences, "bad": s.bad, "ignored": s.ignored,

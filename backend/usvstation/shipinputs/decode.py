@@ -19,49 +19,48 @@ import pynmea2
 from pyais.exceptions import AISBaseException
 from pyais.messages import NMEAMessage
 
-from usvstation.world.model import KNOT, OwnShipReport, World
+from usvstation.world.model import KNOT, MotionReport, OwnShipReport, World
 
 FRAGMENT_TIMEOUT_S = 10.0  # an AIS message whose fragments do not all arrive in time is bad
 _DIST_UNIT_M = {"N": 1852.0, "K": 1000.0, "S": 1609.344}
 _AIS_POSITION = {1, 2, 3, 18, 19}
 
 
-@dataclass(frozen=True)
-class TrackReport:
-    """An AIS report: position (types 1-3, 18, 19) and/or static data (5, 19, 24)."""
+@dataclass(frozen=True, kw_only=True)
+class TrackReport(MotionReport):
+    """An AIS report: position and motion (types 1-3, 18, 19) and/or static data (5, 19, 24)."""
 
     mmsi: int
-    lat: float | None = None
-    lon: float | None = None
-    speed: float | None = None
-    course_deg: float | None = None
-    heading_deg: float | None = None
     name: str | None = None
     length: float | None = None
     beam: float | None = None
 
 
 @dataclass(frozen=True)
-class RadarReport:
-    """ARPA TTM: a tracked target by range and bearing from the own ship."""
+class ArpaReport:
+    """A target tracked by the own ship's radar (ARPA): its number, and its name if given."""
 
     number: int
+    name: str | None = field(default=None, kw_only=True)
+
+
+@dataclass(frozen=True)
+class RadarReport(ArpaReport):
+    """ARPA TTM: the target by range and bearing from the own ship."""
+
     range_m: float
     bearing_deg: float
     relative: bool
     speed: float
     course_deg: float
-    name: str | None = None
 
 
 @dataclass(frozen=True)
-class RadarFix:
-    """ARPA TLL: a tracked target's position."""
+class RadarFix(ArpaReport):
+    """ARPA TLL: the target's position."""
 
-    number: int
     lat: float
     lon: float
-    name: str | None = None
 
 
 Report = OwnShipReport | TrackReport | RadarReport | RadarFix
@@ -173,7 +172,7 @@ class SentenceDecoder:
             if not msg.lat or not msg.lon:
                 return []
             return [RadarFix(int(msg.target_number), msg.latitude, msg.longitude,
-                             msg.target_name or None)]
+                             name=msg.target_name or None)]
         self.stats.ignored += 1
         return []
 
@@ -281,8 +280,7 @@ def _ais_report(ais: object, own: bool) -> list[Report]:
     if own:
         if not pos:
             return []
-        return [OwnShipReport(lat=pos["lat"], lon=pos["lon"], heading_deg=pos["heading_deg"],
-                              course_deg=pos["course_deg"], speed=pos["speed"])]
+        return [OwnShipReport(**pos)]
     if not pos and not static:
         return []
     return [TrackReport(mmsi=int(mmsi), **pos, **static)]  # type: ignore[arg-type]

@@ -21,6 +21,7 @@ import numpy as np
 import pymap3d
 
 from usvstation.geo import RampFrame
+from usvstation.records import Target
 from usvstation.scenario.ships import LeverArm
 
 Source = Literal["ais", "arpa", "manual", "sim"]
@@ -46,14 +47,20 @@ def offset_geodetic(lat: float, lon: float, east: float, north: float) -> tuple[
 
 
 @dataclass(frozen=True)
-class OwnShipReport:
-    """A partial own-ship report (GGA: position; HDT: heading; VTG: course, speed)."""
+class MotionReport:
+    """A ship's position (WGS-84) and motion (compass degrees, m/s over ground) as one report
+    gives them; what the report does not give is None."""
 
     lat: float | None = None
     lon: float | None = None
     heading_deg: float | None = None
     course_deg: float | None = None
     speed: float | None = None  # m/s over ground
+
+
+@dataclass(frozen=True)
+class OwnShipReport(MotionReport):
+    """A partial own-ship report (GGA: position; HDT: heading; VTG: course, speed)."""
 
 
 @dataclass(frozen=True)
@@ -141,28 +148,6 @@ class Track:
     @property
     def positioned(self) -> bool:
         return self.lat is not None and self.lon is not None
-
-
-@dataclass(frozen=True)
-class TargetView:
-    """A track predicted to an instant, in the ramp frame of that instant."""
-
-    id: str
-    source: Source
-    mmsi: int | None
-    name: str | None
-    lat: float
-    lon: float
-    x: float
-    y: float
-    vx: float  # over ground, ramp axes
-    vy: float
-    rvx: float  # relative to the ramp (the ship-fixed frame)
-    rvy: float
-    radius: float
-    age_s: float
-    speed: float
-    course_deg: float
 
 
 @dataclass
@@ -273,8 +258,10 @@ class World:
             return RampPose(a.lat, a.lon, a.ramp_bearing_deg)
         return None
 
-    def targets(self, t: float) -> list[TargetView]:
-        """Every positioned track predicted to t, in the ramp frame of t (vectorised)."""
+    def targets(self, t: float) -> list[Target]:
+        """Every positioned track predicted to t, in the ramp frame of t (vectorised): the
+        `records.Target` the station serves (vx, vy over ground, rvx, rvy relative to the
+        ramp, both in ramp axes)."""
         pose = self.ramp(t)
         tracks = [tr for tr in self.tracks.values() if tr.positioned]
         if pose is None or not tracks:
@@ -292,7 +279,7 @@ class World:
         plat, plon = frame.to_geodetic(x, y)
         svx, svy = frame.vector_to_ramp(pose.ve, pose.vn)
         return [
-            TargetView(
+            Target(
                 id=tr.id, source=tr.source, mmsi=tr.mmsi, name=tr.name,
                 lat=float(plat[i]), lon=float(plon[i]), x=float(x[i]), y=float(y[i]),
                 vx=float(vx[i]), vy=float(vy[i]), rvx=float(vx[i] - svx),

@@ -27,18 +27,29 @@ from dataclasses import dataclass
 import numpy as np
 
 from usvstation.planning import colregs as cr
-from usvstation.planning.seeds.common import World
+from usvstation.planning.seeds.common import GeneticOperators, World
 
 K_AHP = np.array([0.112, 0.444, 0.444])
+PAPER_001_GA = GeneticOperators(population=50, crossover=0.8, mutation=0.02)
 
 
 @dataclass(frozen=True)
 class GAStepOptions:
-    population: int = 50
+    """The GA run at every step and the constants of its fitness and COLREGs rules.
+
+    `ga` population, p_c, p_m; at most `generations` per step, fewer once `stall` pass
+    without improvement; the (a, r) search box from `accel_max` (m/s^2) and
+    `yaw_rate_max_deg` (deg/s); `lam` the sector factor lambda; `d_ca` (m) the distance
+    that caps d0, d1 and the goal room; a target's fuzzy risk scaled by `risk_scale_m`,
+    its rule applied from risk `u_act` or when on a collision course within
+    `detect_range_m`; the hard collision gate looks `lookahead_s` ahead at constant
+    (a, r); `improved` the Tab. III operators; `paper_fitness` eq. 15 as printed
+    (c = 1e5 / d); at most `max_steps` steps.
+    """
+
+    ga: GeneticOperators = PAPER_001_GA
     generations: int = 40
     stall: int = 6
-    crossover: float = 0.8
-    mutation: float = 0.02
     accel_max: float = 2.0
     yaw_rate_max_deg: float = 15.0
     lam: float = 2.0
@@ -180,20 +191,18 @@ def plan_colregs_ga(start: np.ndarray, heading: float, speed0: float, target: np
             f = np.where(crash, f * 1e-4, f)
             return f, in_sector
 
-        pop = rng.uniform(lo, hi, size=(o.population, 2))
+        ga = o.ga
+        pop = rng.uniform(lo, hi, size=(ga.population, 2))
         f, sect = fitness(pop)
         best = pop[int(np.argmax(f))].copy()
         best_val, stall, used = float(f.max()), 0, 0
         for g in range(1, o.generations + 1):
             used = g
-            w = f - f.min() + 1e-12
-            idx = rng.choice(o.population, size=o.population, p=w / w.sum())
-            parents = pop[idx]
-            mates = parents[rng.permutation(o.population)]
-            cross = rng.random(o.population) < o.crossover
-            take = rng.random((o.population, 2)) < 0.5
+            parents, mates = ga.roulette_pairs(pop, f - f.min() + 1e-12, rng)
+            cross = rng.random(ga.population) < ga.crossover
+            take = rng.random((ga.population, 2)) < 0.5
             child = np.where(cross[:, None] & take, mates, parents)
-            mut = rng.random((o.population, 2)) < o.mutation
+            mut = rng.random((ga.population, 2)) < ga.mutation
             child = np.where(mut, child + rng.normal(0.0, 0.25 * (hi - lo), child.shape), child)
             child = np.clip(child, lo, hi)
             if o.improved:

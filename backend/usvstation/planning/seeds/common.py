@@ -1,7 +1,7 @@
 """Shared geometry for the seed planners: timed collision checks, speed profile, turn limit.
 
 Every seed planner produces a polyline in the scenario frame; `finish_plan`
-turns it into the stable plan format (DESIGN.md "Plan output") with the
+turns it into a typed `Plan` (planning/model.py) with the
 same speed profile, the same turn-limit pass and the same recovery run-in
 along the ramp axis, then asks the independent checker
 (`planning.validate.plan_violations`) before anything leaves.
@@ -10,13 +10,14 @@ along the ramp axis, then asks the independent checker
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
 
 from usvstation.geometry import inflated_radius
 from usvstation.planning.errors import NoFeasiblePlan
+from usvstation.planning.model import Plan, PlanMetrics, Waypoint
 from usvstation.planning.validate import plan_violations
 from usvstation.planning.xyt import segments_hit_circles
 from usvstation.scenario import Scenario
@@ -115,6 +116,25 @@ class World:
         dx = p[:, 0, None] - (self.cx + self.vx * t[:, None])
         dy = p[:, 1, None] - (self.cy + self.vy * t[:, None])
         return np.hypot(dx, dy) - self.inflated
+
+
+@dataclass(frozen=True)
+class GeneticOperators:
+    """A genetic algorithm's population size and its crossover and mutation probabilities
+    (per individual or per gene, as each planner's paper says)."""
+
+    population: int
+    crossover: float
+    mutation: float
+
+    def roulette_pairs(self, pop: np.ndarray, weights: np.ndarray,
+                       rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
+        """Roulette-wheel selection: `population` parents drawn with probability in
+        proportion to `weights` (non-negative, not all zero), each paired with a mate, a
+        random permutation of the parents."""
+        idx = rng.choice(self.population, size=self.population, p=weights / weights.sum())
+        parents = pop[idx]
+        return parents, parents[rng.permutation(self.population)]
 
 
 def cruise_speed(scenario: Scenario, requested: float | None = None) -> float:
@@ -259,8 +279,8 @@ def finish_plan(
     scenario: Scenario, route: np.ndarray, planner: str, seed: int, cruise: float,
     elapsed_s: float, extra: dict[str, Any] | None = None, cut: float = 6.0,
     speeds: np.ndarray | None = None,
-) -> dict[str, Any]:
-    """Stable plan dict from a route start -> ... -> goal, checked by the validator.
+) -> Plan:
+    """The plan of a route start -> ... -> goal, checked by the validator.
 
     For a recovery the route must already end with the run-in along the ramp
     axis (gate, then (0, 0)). Raises NoFeasiblePlan with the checker's first
@@ -286,15 +306,15 @@ def finish_plan(
 
 
 def _assemble(scenario: Scenario, pts: np.ndarray, t: np.ndarray, v: np.ndarray, planner: str,
-              seed: int, elapsed_s: float, extra: dict[str, Any] | None) -> dict[str, Any]:
+              seed: int, elapsed_s: float, extra: dict[str, Any] | None) -> Plan:
     h = np.degrees(np.arctan2(*np.diff(pts, axis=0).T[::-1]))
     h = np.append(h, h[-1]) % 360.0
     waypoints = [
-        {"x": _r(p[0]), "y": _r(p[1]), "t": _r(tt), "speed": _r(vv), "heading_deg": _r(hh)}
+        Waypoint(_r(p[0]), _r(p[1]), _r(tt), _r(vv), _r(hh))  # type: ignore[arg-type]
         for p, tt, vv, hh in zip(pts, t, v, h, strict=True)
     ]
-    waypoints[0]["x"], waypoints[0]["y"] = scenario.start.x, scenario.start.y
-    waypoints[-1]["x"], waypoints[-1]["y"] = scenario.goal.x, scenario.goal.y
+    waypoints[0] = replace(waypoints[0], x=scenario.start.x, y=scenario.start.y)
+    waypoints[-1] = replace(waypoints[-1], x=scenario.goal.x, y=scenario.goal.y)
     pm = path_metrics(pts)
     clear = World.from_scenario(scenario, margin=0.0)
     metrics: dict[str, Any] = {
@@ -308,9 +328,8 @@ def _assemble(scenario: Scenario, pts: np.ndarray, t: np.ndarray, v: np.ndarray,
         "arrival_heading_deg": _r(float(h[-1])),
     }
     metrics.update(extra or {})
-    plan = {"planner": planner, "scenario": scenario.name, "seed": seed,
-            "waypoints": waypoints, "metrics": metrics, "warnings": []}
-    bad = plan_violations(plan, scenario)
+    plan = Plan(planner, scenario.name, seed, tuple(waypoints), PlanMetrics(metrics))
+    bad = plan_violations(plan.to_document(), scenario)
     if bad:
         raise NoFeasiblePlan(f"no feasible plan: {planner}: {bad[0]}")
     return plan

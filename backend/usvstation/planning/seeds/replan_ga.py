@@ -24,23 +24,35 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from usvstation.planning.seeds.common import World
+from usvstation.planning.seeds.common import GeneticOperators, World
 
 PENALTY_M = 1e4
+PAPER_002_GA = GeneticOperators(population=20, crossover=0.9, mutation=0.35)
+
+
+@dataclass(frozen=True)
+class Replanning:
+    """When the boat sailing the global path re-plans [002 §II.B.3]: a moving obstacle
+    within `unsafe_range_m` (beyond its inflated radius) whose path meets the rest of the
+    route less than `horizon_s` ahead; at most `max_replans` times."""
+
+    unsafe_range_m: float = 100.0
+    horizon_s: float = 120.0
+    max_replans: int = 20
 
 
 @dataclass(frozen=True)
 class ReplanOptions:
-    population: int = 20
+    """`ga` population, single-point crossover and per-chromosome mutation probabilities;
+    `generations_global` for the global path, `generations_local` for each local re-plan;
+    a chromosome is `waypoints` cells of a `grid` x `grid` grid over the area."""
+
+    ga: GeneticOperators = PAPER_002_GA
     generations_global: int = 30
     generations_local: int = 20
-    crossover: float = 0.9
-    mutation: float = 0.35
     grid: int = 40
     waypoints: int = 4
-    unsafe_range_m: float = 100.0
-    horizon_s: float = 120.0
-    max_replans: int = 20
+    replanning: Replanning = Replanning()
 
 
 def _evaluate(paths: np.ndarray, world: World, cruise: float, t0: float) -> tuple[np.ndarray, ...]:
@@ -69,24 +81,23 @@ def ga_path(start: np.ndarray, goal: np.ndarray, world: World, cruise: float, t0
         return np.concatenate([np.broadcast_to(start, (n, 1, 2)), wp,
                                np.broadcast_to(goal, (n, 1, 2))], axis=1)
 
-    pop = rng.integers(0, o.grid + 1, size=(o.population, o.waypoints, 2))
+    ga = o.ga
+    pop = rng.integers(0, o.grid + 1, size=(ga.population, o.waypoints, 2))
     line = start + np.linspace(0, 1, o.waypoints + 2)[1:-1, None] * (goal - start)
     seeds = [line, *list(seed_paths or [])]
-    for k, sp in enumerate(seeds[: o.population]):
+    for k, sp in enumerate(seeds[: ga.population]):
         pop[k] = np.clip(np.rint((sp - lo) / cell), 0, o.grid).astype(int)
     f, nh = _evaluate(decode(pop), world, cruise, t0)
     for _ in range(generations):
         elite = pop[int(np.argmax(f))].copy()
-        idx = rng.choice(o.population, size=o.population, p=f / f.sum())
-        par = pop[idx]
-        mates = par[rng.permutation(o.population)]
-        cut = rng.integers(1, o.waypoints, size=o.population)
-        cross = rng.random(o.population) < o.crossover
+        par, mates = ga.roulette_pairs(pop, f, rng)
+        cut = rng.integers(1, o.waypoints, size=ga.population)
+        cross = rng.random(ga.population) < ga.crossover
         mask = (np.arange(o.waypoints)[None, :] >= cut[:, None]) & cross[:, None]
         child = np.where(mask[:, :, None], mates, par)
         for axis in (0, 1):  # uniform mutation, one gene per chromosome (x and y)
-            m = rng.random(o.population) < o.mutation
-            g = rng.integers(0, o.waypoints, size=o.population)
+            m = rng.random(ga.population) < ga.mutation
+            g = rng.integers(0, o.waypoints, size=ga.population)
             child[m, g[m], axis] = rng.integers(0, o.grid + 1, size=int(m.sum()))
         child[0] = elite
         pop = child
@@ -113,13 +124,13 @@ def plan_replan(start: np.ndarray, goal: np.ndarray, world: World, cruise: float
         rest = np.vstack([pos, remaining])
         seg = np.hypot(*np.diff(rest, axis=0).T)
         tt = t + np.concatenate([[0.0], np.cumsum(seg)]) / cruise
-        if mw.count and len(latencies) < o.max_replans:
+        if mw.count and len(latencies) < o.replanning.max_replans:
             near = np.hypot(mw.cx + mw.vx * t - pos[0], mw.cy + mw.vy * t - pos[1]) \
-                <= o.unsafe_range_m + mw.inflated
+                <= o.replanning.unsafe_range_m + mw.inflated
             if near.any():
                 sub = World(mw.cx[near], mw.cy[near], mw.vx[near], mw.vy[near],
                             mw.radius[near], mw.inflated[near])
-                within = tt[:-1] - t < o.horizon_s
+                within = tt[:-1] - t < o.replanning.horizon_s
                 hit = sub.segments_hit(rest[:-1], tt[:-1], rest[1:], tt[1:]) & within
                 if hit.any():
                     t0 = time.perf_counter()
