@@ -177,9 +177,9 @@ class Evaluator:
         keep = np.flatnonzero((ox_hi >= xlo) & (ox_lo <= xhi) & (oy_hi >= ylo) & (oy_lo <= yhi))
         return seg[keep], keep
 
-    def _gate_counts(self, paths: PathBatch, turns: np.ndarray,
-                     ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Violated acceleration, speed and turn constraints per path (every gate but G_col)."""
+    def _gate_masks(self, paths: PathBatch, turns: np.ndarray) -> dict[str, list[np.ndarray]]:
+        """Per gate but G_col, its violated constraints: (P, k) masks per segment or waypoint
+        and (P,) masks per path (the first turn)."""
         problem = self.problem
         v2 = paths.v * paths.v
         # |dv| / dT <= a_max with dT = 2 L / (v0 + v1)  <=>  |v1^2 - v0^2| <= 2 a_max L
@@ -187,31 +187,29 @@ class Evaluator:
             paths.seg_len + _EPS
         )
         acc_bad |= paths.seg_len <= _EPS
-        vel_bad = (paths.v < problem.speed_min - _EPS) | (paths.v > problem.speed_max + _EPS)
-        turn_bad = turns > problem.turn_max + _EPS
+        vel = [(paths.v < problem.speed_min - _EPS) | (paths.v > problem.speed_max + _EPS)]
+        turn = [turns > problem.turn_max + _EPS]
         if problem.start_heading is not None:
-            turn_bad = np.column_stack([turn_bad, first_turn(paths, problem) > problem.turn_max])
+            turn.append(first_turn(paths, problem) > problem.turn_max)
         if problem.current != (0.0, 0.0):
-            vel_bad = np.column_stack([vel_bad, water_speed_bad(
-                paths.seg_dx, paths.seg_dy, paths.v[:, :-1], paths.v[:, 1:], problem)])
-        return acc_bad.sum(axis=1), vel_bad.sum(axis=1), turn_bad.sum(axis=1)
+            vel.append(water_speed_bad(
+                paths.seg_dx, paths.seg_dy, paths.v[:, :-1], paths.v[:, 1:], problem))
+        return {"acc": [acc_bad], "vel": vel, "turn": turn}
+
+    def _gate_counts(self, paths: PathBatch, turns: np.ndarray,
+                     ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Violated acceleration, speed and turn constraints per path (every gate but G_col)."""
+        masks = self._gate_masks(paths, turns)
+        return tuple(  # type: ignore[return-value]
+            sum(m.sum(axis=1) if m.ndim == 2 else m.astype(np.int64) for m in masks[gate])
+            for gate in ("acc", "vel", "turn"))
 
     def _gate_any(self, paths: PathBatch, turns: np.ndarray) -> np.ndarray:
         """True where any gate but G_col fails: `_gate_counts` reduced to one flag per path."""
-        problem = self.problem
-        v2 = paths.v * paths.v
-        bad = np.abs(v2[:, 1:] - v2[:, :-1]) > (2.0 * problem.accel_max * (1.0 + _EPS)) * (
-            paths.seg_len + _EPS)
-        bad |= paths.seg_len <= _EPS
-        if problem.current != (0.0, 0.0):
-            bad |= water_speed_bad(paths.seg_dx, paths.seg_dy, paths.v[:, :-1], paths.v[:, 1:],
-                                   problem)
-        out = bad.any(axis=1)
-        out |= (turns > problem.turn_max + _EPS).any(axis=1)
-        out |= ((paths.v < problem.speed_min - _EPS) | (paths.v > problem.speed_max + _EPS)
-                ).any(axis=1)
-        if problem.start_heading is not None:
-            out |= first_turn(paths, problem) > problem.turn_max
+        out = np.zeros(len(paths), dtype=bool)
+        for masks in self._gate_masks(paths, turns).values():
+            for m in masks:
+                out |= m.any(axis=1) if m.ndim == 2 else m
         return out
 
     def _terms(self, paths: PathBatch, turns: np.ndarray) -> dict[str, np.ndarray]:
