@@ -1,7 +1,6 @@
 """The planner benchmark runs end to end (quick mode) and reports every figure it promises."""
 
 import shutil
-import statistics
 
 from usvstation.bench.planner import run_planner_bench
 from usvstation.scenario import bundled_scenario_dir
@@ -16,8 +15,7 @@ def test_quick_planner_bench(tmp_path):
     (row,) = out["scenarios"]
     assert row["scenario"] == "case3" and row["valid"] == 2 and len(row["plan_time_ms"]) == 2
     assert row["plan_time_ms_median"] > 0
-    # one scenario here: the suite median is that of its (rounded) per-seed times
-    assert out["suite_plan_time_ms_median"] == round(statistics.median(row["plan_time_ms"]), 2)
+    assert "suite_plan_time_ms_median" in out  # its arithmetic: tests/unit/test_bench_summary.py
     for key in ("fit_d", "fit_t", "fit_ang", "fit_mal", "length_m", "duration_s",
                 "min_clearance_m", "generations"):
         assert row[key] is not None
