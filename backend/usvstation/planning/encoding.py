@@ -63,8 +63,9 @@ def timed_paths(x: np.ndarray, y: np.ndarray, v: np.ndarray) -> PathBatch:
     dx, dy = x[:, 1:] - x[:, :-1], y[:, 1:] - y[:, :-1]
     seg_len = np.hypot(dx, dy)
     seg_dt = 2.0 * seg_len / (v[:, :-1] + v[:, 1:])
-    t = np.zeros_like(x)
-    np.cumsum(seg_dt, axis=1, out=t[:, 1:])
+    t = np.empty_like(x)
+    t[:, 0] = 0.0
+    np.add.accumulate(seg_dt, axis=1, out=t[:, 1:])  # np.cumsum, without its wrapper
     return PathBatch(x=x, y=y, v=v, t=t, seg_len=seg_len, seg_dt=seg_dt, seg_dx=dx, seg_dy=dy)
 
 
@@ -199,9 +200,8 @@ class GeneLayout:
     def codes_to_levels(self, codes: np.ndarray) -> np.ndarray:
         levels = (codes * self.gene_count) >> self.gene_bits
         if self.cone_tan is not None:
-            x_last = levels[:, 3 * (self.n_mid - 1)]
-            n = 2 * self.cone_half_levels(x_last) + 1
             g = self.cone_gene
+            n = self._cone_levels[levels[:, g - 1]]
             levels[:, g] = (codes[:, g] * n) >> self.gene_bits[g]
         return levels
 
@@ -210,8 +210,7 @@ class GeneLayout:
         codes = -((-num) // self.gene_count)  # ceil division
         if self.cone_tan is not None:
             g = self.cone_gene
-            n = 2 * self.cone_half_levels(levels[:, g - 1]) + 1
-            codes[:, g] = -((-num[:, g]) // n)
+            codes[:, g] = -((-num[:, g]) // self._cone_levels[levels[:, g - 1]])
         return codes
 
     # --- levels -> coordinates ----------------------------------------------
@@ -224,21 +223,42 @@ class GeneLayout:
     def v_of(self, level: np.ndarray) -> np.ndarray:
         return self.v_lo + level * self.v_res
 
-    def levels_to_paths(self, levels: np.ndarray) -> PathBatch:
-        """Assemble full waypoint arrays (start, intermediates, goal) and eq. 11 times."""
-        p = levels.shape[0]
-        mid = levels[:, : 3 * self.n_mid].reshape(p, self.n_mid, 3)
-        xm = self.x_min + (self.x_base + mid[:, :, 0]) * self.x_res
-        ym = self.y_of(mid[:, :, 1])
+    @functools.cached_property
+    def _cone_levels(self) -> np.ndarray:
+        """Levels of the cone gene (2 m + 1) per level of the last waypoint's x."""
+        return 2 * self.cone_m + 1
+
+    @functools.cached_property
+    def _affine(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Per gene (base, res, lo): its coordinate is (level + base) res + lo, the same
+        arithmetic as `x_of`, `y_of` and `v_of` (the cone gene's base is -m, per row)."""
+        n = self.n_mid
+        base = np.zeros(self.n_genes, dtype=np.int64)
+        base[0 : 3 * n : 3] = self.x_base
+        res = np.array([self.x_res, self.y_res, self.v_res] * n + [self.v_res])
+        lo = np.array([self.x_min, self.y_lo, self.v_lo] * n + [self.v_lo])
         if self.cone_tan is not None:
-            m = self.cone_half_levels(mid[:, -1, 0])
-            ym[:, -1] = (mid[:, -1, 1] - m) * self.y_res
-        n = self.n_waypoints
-        x, y, v = (np.empty((p, n), order="F") for _ in range(3))
-        x[:, 0], y[:, 0], v[:, 0] = self.start[0], self.start[1], self.start_speed
-        x[:, -1], y[:, -1], v[:, -1] = self.goal[0], self.goal[1], self.v_of(levels[:, -1])
-        x[:, 1:-1], y[:, 1:-1], v[:, 1:-1] = xm, ym, self.v_of(mid[:, :, 2])
-        return timed_paths(x, y, v)
+            lo[self.cone_gene] = 0.0
+        return base, res, lo
+
+    def levels_to_paths(self, levels: np.ndarray) -> PathBatch:
+        """Assemble full waypoint arrays (start, intermediates, goal) and eq. 11 times.
+
+        x, y and v are (P, N) views of one (3, N, P) block: column-major, so the
+        evaluator's per-segment gathers read contiguous memory.
+        """
+        p, n_mid = levels.shape[0], self.n_mid
+        base, res, lo = self._affine
+        pos = levels + base
+        if self.cone_tan is not None:
+            pos[:, self.cone_gene] -= self.cone_m[levels[:, self.cone_gene - 1]]
+        value = pos * res + lo  # (P, G)
+        xyv = np.empty((3, self.n_waypoints, p))
+        xyv[:, 1:-1, :] = value[:, : 3 * n_mid].reshape(p, n_mid, 3).transpose(2, 1, 0)
+        xyv[:, 0, :] = ((self.start[0],), (self.start[1],), (self.start_speed,))
+        xyv[:2, -1, :] = self.goal[:, None]
+        xyv[2, -1, :] = value[:, -1]
+        return timed_paths(xyv[0].T, xyv[1].T, xyv[2].T)
 
     def decode(self, bits: np.ndarray) -> PathBatch:
         """Bit strings (P, n_bits) to paths: TransferDecimal, decode-and-map, TimeReset."""

@@ -36,6 +36,7 @@ from usvstation.scenario.options import IGAOptions
 
 _EPS = 1e-9
 BRUTE_CHUNK = 1 << 18  # elements per eq. 9 pass: 2 MB a temporary
+PRUNE_ELEMENTS = 4096  # pair-path elements from which the pairs are pruned by x-y-t boxes
 
 
 @dataclass(frozen=True)
@@ -134,7 +135,8 @@ class Evaluator:
             seg, obs = np.nonzero(near | ~f.static[None, :])
             col = f.centre[obs], f.velocity[obs]
             self.pairs = (seg, obs)
-            self._pair_obs = (col[0][:, 0], col[0][:, 1], col[1][:, 0], col[1][:, 1], r[obs])
+            self._pair_obs = tuple(a[:, None] for a in (  # (pairs, 1): against (pairs, P)
+                col[0][:, 0], col[0][:, 1], col[1][:, 0], col[1][:, 1], r[obs]))
 
     def collisions(self, paths: PathBatch) -> np.ndarray:
         """Number of (segment, obstacle) pairs in collision, per path (exact)."""
@@ -146,34 +148,52 @@ class Evaluator:
             return np.concatenate([
                 collision_matrix(paths.rows(slice(k, k + step)), self.problem).sum(axis=(0, 1))
                 for k in range(0, p, step)])
-        seg_all, keep_all = self._pairs_near(paths)
-        total = np.zeros(len(paths), dtype=np.int64)
-        step = max(1, BRUTE_CHUNK // max(len(paths), 1))  # bounds memory on huge inputs
-        for k in range(0, seg_all.shape[0], step):
-            seg, keep = seg_all[k:k + step], keep_all[k:k + step]
-            cx, cy, vx, vy, r = (a[keep] for a in self._pair_obs)
-            t0, t1 = paths.t[:, seg], paths.t[:, seg + 1]
+        return self._pair_collisions(paths.x.T, paths.y.T, paths.t.T)
+
+    def _pair_collisions(self, x: np.ndarray, y: np.ndarray, t: np.ndarray) -> np.ndarray:
+        """`collisions` over the precomputed pairs, of waypoints given as (N, P) arrays (one
+        path per column, so that gathering a segment's end points reads whole rows).
+
+        With more than `PRUNE_ELEMENTS` pair-path elements the pairs are first pruned by
+        the batch's x-y-t boxes; below that testing them all costs less than pruning.
+        """
+        seg_all = self.pairs[0]
+        n_paths = x.shape[1]
+        keep_all = None
+        if seg_all.size * n_paths > PRUNE_ELEMENTS:
+            seg_all, keep_all = self._pairs_near(x, y, t)
+        total = np.zeros(n_paths, dtype=np.int64)
+        step = max(1, BRUTE_CHUNK // max(n_paths, 1))  # bounds memory on huge inputs
+        for k in range(0, seg_all.size, step):
+            part = slice(k, k + step)
+            s0 = seg_all[part]
+            s1 = s0 + 1
+            pick = part if keep_all is None else keep_all[part]
+            cx, cy, vx, vy, r = (a[pick] for a in self._pair_obs)
+            t0, t1 = t[s0], t[s1]
             hits = hits_from_relative(
-                paths.x[:, seg] - (cx + vx * t0), paths.y[:, seg] - (cy + vy * t0),
-                paths.x[:, seg + 1] - (cx + vx * t1), paths.y[:, seg + 1] - (cy + vy * t1), r,
-            )
-            total += hits.sum(axis=1)
+                x[s0] - (cx + vx * t0), y[s0] - (cy + vy * t0),
+                x[s1] - (cx + vx * t1), y[s1] - (cy + vy * t1), r,
+            )  # (pairs, P)
+            total += np.add.reduce(hits, axis=0, dtype=np.int64)
         return total
 
-    def _pairs_near(self, paths: PathBatch) -> tuple[np.ndarray, np.ndarray]:
-        """The precomputed pairs whose obstacle can reach the batch's segment boxes."""
+    def _pairs_near(self, x: np.ndarray, y: np.ndarray, t: np.ndarray,
+                    ) -> tuple[np.ndarray, np.ndarray]:
+        """The precomputed pairs whose obstacle can reach the batch's segment boxes
+        (waypoints as (N, P) arrays)."""
         seg = self.pairs[0]
-        x0, x1, y0, y1 = paths.x[:, :-1], paths.x[:, 1:], paths.y[:, :-1], paths.y[:, 1:]
-        xlo = np.minimum(x0, x1).min(axis=0)[seg]
-        xhi = np.maximum(x0, x1).max(axis=0)[seg]
-        ylo = np.minimum(y0, y1).min(axis=0)[seg]
-        yhi = np.maximum(y0, y1).max(axis=0)[seg]
-        tlo, thi = paths.t[:, :-1].min(axis=0)[seg], paths.t[:, 1:].max(axis=0)[seg]
-        cx, cy, vx, vy, r = self._pair_obs
-        ox_lo = cx + np.minimum(vx * tlo, vx * thi) - r
-        ox_hi = cx + np.maximum(vx * tlo, vx * thi) + r
-        oy_lo = cy + np.minimum(vy * tlo, vy * thi) - r
-        oy_hi = cy + np.maximum(vy * tlo, vy * thi) + r
+        lo, hi = np.minimum, np.maximum
+        xlo = lo.reduce(lo(x[:-1], x[1:]), axis=1)[seg]
+        xhi = hi.reduce(hi(x[:-1], x[1:]), axis=1)[seg]
+        ylo = lo.reduce(lo(y[:-1], y[1:]), axis=1)[seg]
+        yhi = hi.reduce(hi(y[:-1], y[1:]), axis=1)[seg]
+        tlo, thi = lo.reduce(t[:-1], axis=1)[seg], hi.reduce(t[1:], axis=1)[seg]
+        cx, cy, vx, vy, r = (a[:, 0] for a in self._pair_obs)
+        ox_lo = cx + lo(vx * tlo, vx * thi) - r
+        ox_hi = cx + hi(vx * tlo, vx * thi) + r
+        oy_lo = cy + lo(vy * tlo, vy * thi) - r
+        oy_hi = cy + hi(vy * tlo, vy * thi) + r
         keep = np.flatnonzero((ox_hi >= xlo) & (ox_lo <= xhi) & (oy_hi >= ylo) & (oy_lo <= yhi))
         return seg[keep], keep
 
@@ -244,8 +264,13 @@ class Evaluator:
         feasible = ~self._gate_any(paths, turns)
         rows = np.flatnonzero(feasible)
         if rows.size and self.problem.obstacles.count:
-            sub = paths if rows.size == len(paths) else paths.rows(rows)
-            feasible[rows] = self.collisions(sub) == 0
+            x, y, t = paths.x.T, paths.y.T, paths.t.T
+            if self.pairs is None:
+                feasible[rows] = self.collisions(paths.rows(rows)) == 0
+            elif rows.size == len(paths):
+                feasible[rows] = self._pair_collisions(x, y, t) == 0
+            else:
+                feasible[rows] = self._pair_collisions(x[:, rows], y[:, rows], t[:, rows]) == 0
         return self._eq12(self._terms(paths, turns), feasible)
 
     def __call__(self, paths: PathBatch) -> Evaluation:
