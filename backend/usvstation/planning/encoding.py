@@ -61,7 +61,7 @@ class PathBatch:
 def timed_paths(x: np.ndarray, y: np.ndarray, v: np.ndarray) -> PathBatch:
     """Waypoints (P, N) with eq. 11 segment times dT = 2 L / (v_i + v_i+1) (speeds > 0)."""
     dx, dy = x[:, 1:] - x[:, :-1], y[:, 1:] - y[:, :-1]
-    seg_len = np.hypot(dx, dy)
+    seg_len = np.sqrt(dx * dx + dy * dy)  # np.hypot costs twice as much here
     seg_dt = 2.0 * seg_len / (v[:, :-1] + v[:, 1:])
     t = np.empty_like(x)
     t[:, 0] = 0.0
@@ -274,9 +274,8 @@ class GeneLayout:
 
     # --- coordinates -> levels (for preheating and tests) -------------------
     def y_level(self, y: np.ndarray) -> np.ndarray:
-        return np.clip(np.rint((y - self.y_lo) / self.y_res), 0, self.y_count - 1).astype(
-            np.int64
-        )
+        cell = np.maximum(np.rint((y - self.y_lo) / self.y_res), 0)
+        return np.minimum(cell, self.y_count - 1).astype(np.int64)
 
     def v_level_range(self, vlo: np.ndarray, vhi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Levels whose speed lies in [vlo, vhi] (may be empty: lo > hi)."""

@@ -22,6 +22,7 @@ generations.
 
 from __future__ import annotations
 
+import math
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -34,6 +35,7 @@ from usvstation.planning.preheat import PreheatReport, preheat, random_levels
 from usvstation.planning.problem import Problem
 from usvstation.scenario.options import IGAOptions
 
+_LOG_AMP = (math.log(0.6), math.log(12.0) - math.log(0.6))  # local_reinit's bump, log m
 EVAL_CHUNK = 128  # paths per evaluation pass; the time budget is checked between passes
 
 
@@ -119,15 +121,14 @@ def run_iga(
             newborn, fresh, report = _newborns(
                 layout, problem, opts, rng, parents, fresh, n_newborn, report, expired
             )
-        batch_fit, _ = fitness(np.vstack([children, newborn]))
+        batch_fit, _ = fitness(np.concatenate([children, newborn]))
         child_fit, born_fit = batch_fit[: children.shape[0]], batch_fit[children.shape[0] :]
         if opts.ssih:
             n_dead = int(np.count_nonzero(child_fit <= 0.0))
             children, child_fit = _sacrifice(children, child_fit, newborn, born_fit)
             n_newborn = min(pop_n, max(8, (3 * n_dead) // 2))
-        pop = _Population(
-            np.vstack([pop.codes[elite], children]), np.concatenate([pop.fit[elite], child_fit])
-        )
+        pop = _Population(np.concatenate([pop.codes[elite], children]),
+                          np.concatenate([pop.fit[elite], child_fit]))
         i = int(np.argmax(pop.fit))
         if pop.fit[i] > best_fit:
             best_fit, best_codes = float(pop.fit[i]), pop.codes[i].copy()
@@ -172,11 +173,11 @@ def _foundation(
         more, ok_more, rep = preheat(layout, problem, harder, rng, pop_n,
                                      need=max(4, pop_n // 4) - int(ok.sum()), expired=expired)
         report.merge(rep)
-        grown, ok = np.vstack([grown, more]), np.concatenate([ok, ok_more])
+        grown, ok = np.concatenate([grown, more]), np.concatenate([ok, ok_more])
     grown = grown[ok]
     levels, fresh = grown[:pop_n], grown[pop_n:]
     if levels.shape[0] < pop_n:
-        levels = np.vstack([levels, random_levels(layout, rng, pop_n - levels.shape[0])])
+        levels = np.concatenate([levels, random_levels(layout, rng, pop_n - levels.shape[0])])
     return levels, layout.levels_to_codes(fresh), report
 
 
@@ -199,12 +200,14 @@ def _offspring(layout: GeneLayout, pop: _Population, n: int, opts: IGAOptions, p
         return pop.codes[:0]
     pop_n = pop.codes.shape[0]
     pairs = (n + 1) // 2
-    entrants = rng.integers(0, pop_n, size=(2 * pairs, opts.tournament_size))
+    u = rng.random((2 * pairs, opts.tournament_size))  # floor(u k): uniform on 0..k-1
+    entrants = (u * pop_n).astype(np.int64)
     winners = entrants[np.arange(2 * pairs), np.argmax(pop.fit[entrants], axis=1)]
     a, b = pop.codes[winners[:pairs]], pop.codes[winners[pairs:]]
-    cross = rng.random(pairs) < opts.crossover_rate
-    cut = np.where(cross, rng.integers(1, max(layout.n_bits, 2), size=pairs), layout.n_bits)
-    children = np.vstack(single_point_crossover(layout, a, b, cut))[:n]
+    u = rng.random((2, pairs))
+    cut = 1 + (u[1] * max(layout.n_bits - 1, 1)).astype(np.int64)  # a cut point in 1..n_bits-1
+    cut = np.where(u[0] < opts.crossover_rate, cut, layout.n_bits)
+    children = np.concatenate(single_point_crossover(layout, a, b, cut))[:n]
     return mutate(layout, children, pm, rng)
 
 
@@ -260,7 +263,7 @@ def _newborns(
             pool.append(layout.levels_to_codes(local))
         else:
             pool = [layout.levels_to_codes(random_levels(layout, rng, n))]
-        return np.vstack(pool), fresh, report
+        return np.concatenate(pool), fresh, report
     if parents.shape[0] == 0 and fresh.shape[0] == 0:
         grown, ok, rep = preheat(layout, problem, opts, rng, n, expired=expired)
         report.merge(rep)
@@ -270,7 +273,7 @@ def _newborns(
     if parents.shape[0]:
         local = local_reinit(layout, rng, layout.codes_to_levels(parents), n - n_fresh)
         pool.append(layout.levels_to_codes(local))
-    return np.vstack(pool), fresh[n_fresh:], report
+    return np.concatenate(pool), fresh[n_fresh:], report
 
 
 def _sacrifice(
@@ -304,13 +307,16 @@ def local_reinit(
     x is redrawn inside its D_SL block and speeds move by one level.
     """
     n_mid = layout.n_mid
-    lv = parents[rng.integers(0, parents.shape[0], size=n)]
-    centre = rng.integers(0, n_mid, size=(n, 1))
-    half = rng.integers(0, 4, size=(n, 1))
+    u = rng.random((n, 4 + n_mid))  # parent, centre, half-width, amplitude; one per waypoint
+    lv = parents[(u[:, 0] * parents.shape[0]).astype(np.int64)]
+    centre = (u[:, 1:2] * n_mid).astype(np.int64)
+    half = np.floor(u[:, 2:3] * 4.0)
     weight = np.maximum(1.0 - np.abs(np.arange(n_mid) - centre) / (half + 1.0), 0.0)
-    sign = np.where(rng.random((n, 1)) < 0.5, -1.0, 1.0)
-    amp = sign * np.exp(rng.uniform(np.log(0.6), np.log(12.0), size=(n, 1))) / layout.y_res
-    u = rng.random((n, n_mid))
+    # log-uniform in [0.6, 12] m, either side (the sign from the same draw's lower half)
+    side = u[:, 3:4]
+    amp = np.exp(_LOG_AMP[0] + _LOG_AMP[1] * np.abs(2.0 * side - 1.0)) / layout.y_res
+    amp = np.where(side < 0.5, -amp, amp)
+    u = u[:, 4:]
     window = weight > 0.0
     xs, ys, vs = lv[:, 0 : 3 * n_mid : 3], lv[:, 1 : 3 * n_mid : 3], lv[:, 2 : 3 * n_mid : 3]
     xs[:] = np.where(window & (u < 0.3), (u * (layout.x_count / 0.3)).astype(np.int64), xs)

@@ -29,9 +29,9 @@ reachable range.
 
 Only obstacles that can reach a waypoint block's x-range are tested there:
 moving ones always, static ones when their inflated circle overlaps it; of
-those, a draw tests the ones that reach its box in x-y-t, and with 16 or
-more, each individual's candidates only against the ones that reach its own
-box (exact: the same points are kept as by the all-pairs test). Every eq. 9
+those, a large draw tests the ones that reach its box in x-y-t, and with 16
+or more, each individual's candidates only against the ones that reach its
+own box (exact: the same points are kept as by the all-pairs test). Every eq. 9
 pass holds at most `KERNEL_ELEMENTS` elements.
 """
 
@@ -55,6 +55,7 @@ _SPREAD = math.radians(55.0)  # bearing spread of candidates around the aim
 _EPS = 1e-9
 _PAIR_MIN_OBSTACLES = 16  # from this many obstacles on, candidates are paired per individual
 KERNEL_ELEMENTS = 1 << 18  # elements per eq. 9 pass: 2 MB a temporary
+PRUNE_ELEMENTS = 4096  # obstacle-candidate elements from which a draw prunes by x-y-t box
 
 
 @dataclass
@@ -180,13 +181,14 @@ class _Grower:
         slope0 = walk.slope[idx, None]
         last = k == lay.n_mid - 1
 
-        xl = rng.integers(0, lay.x_count[k], size=(n, c))
+        u = rng.random((3, n, c))  # x level, bearing offset, the non-greedy choice's key
+        xl = (u[0] * lay.x_count[k]).astype(np.int64)
         x = lay.x_of(xl, k)
         dx = px - x  # > 0: the path steps towards the goal
         ax, ay = self._aim(k, px, walk.join_x[idx, None], walk.aim_y[idx, None])
         taper = min(1.0, max(0.2, (lay.n_mid - 1 - k) / 3.0))
-        offset = rng.uniform(-1.0, 1.0, size=(n, c))
-        if k == 0 and np.isnan(self.start_slope):
+        offset = 2.0 * u[1] - 1.0
+        if k == 0 and math.isnan(self.start_slope):
             lo, hi = -_MAX_SLOPE, _MAX_SLOPE
         else:
             lo = np.maximum(slope0 - prob.turn_max, -_MAX_SLOPE)
@@ -195,34 +197,35 @@ class _Grower:
             slope = lo + (hi - lo) * (offset + 1.0) / 2.0
         else:
             slope = np.arctan2(ay - py, px - ax) + (taper * _SPREAD) * offset
-        y = py + dx * np.tan(np.clip(slope, lo, hi))
+        y = py + dx * np.tan(np.minimum(np.maximum(slope, lo), hi))
         if last and lay.cone_tan is not None:
             m = lay.cone_half_levels(xl)
-            cell = np.clip(np.rint(y / lay.y_res), -m, m)
+            cell = np.minimum(np.maximum(np.rint(y / lay.y_res), -m), m)
             y, yl = cell * lay.y_res, (cell + m).astype(np.int64)
         else:
             yl = lay.y_level(y)
             y = lay.y_of(yl)
-        slope = np.arctan2(y - py, dx)
-        seg = np.hypot(dx, y - py)
-        vl, v, t, good = self._speed(pv, pt, seg, -dx / seg, (y - py) / seg)
-        if k > 0 or not np.isnan(self.start_slope):
+        dy = y - py
+        slope = np.arctan2(dy, dx)
+        seg = np.sqrt(dx * dx + dy * dy)
+        vl, v, t, good = self._speed(pv, pt, seg, -dx / seg, dy / seg)
+        if k > 0 or not math.isnan(self.start_slope):
             good &= np.abs(slope - slope0) <= prob.turn_max + _EPS
         if prob.current != (0.0, 0.0):
-            good &= ~water_speed_bad(x - px, y - py, pv, v, prob)
+            good &= ~water_speed_bad(-dx, dy, pv, v, prob, seg)
         good &= self._free(k, px, py, pt, x, y, t)
         if last:
             gx, gy = float(lay.goal[0]), float(lay.goal[1])
-            gseg = np.hypot(x - gx, y - gy)
-            good &= np.abs(np.arctan2(gy - y, x - gx) - slope) <= prob.turn_max + _EPS
             gdx, gdy = gx - x, gy - y
+            gseg = np.sqrt(gdx * gdx + gdy * gdy)
+            good &= np.abs(np.arctan2(gy - y, x - gx) - slope) <= prob.turn_max + _EPS
             gvl, gv, gt, gok = self._speed(v, t, gseg, gdx / gseg, gdy / gseg)
             if prob.current != (0.0, 0.0):
-                gok &= ~water_speed_bad(gdx, gdy, v, gv, prob)
+                gok &= ~water_speed_bad(gdx, gdy, v, gv, prob, gseg)
             good &= gok & self._free(k + 1, x, y, t, gx, gy, gt)
 
         placed = good.any(axis=1)
-        key = np.where(walk.greedy[idx, None], np.abs(offset), rng.random((n, c)))
+        key = np.where(walk.greedy[idx, None], np.abs(offset), u[2])
         col = np.argmin(np.where(good, key, np.inf), axis=1)
         rows = np.flatnonzero(placed)
         pick, who = (rows, col[rows]), idx[rows]
@@ -271,7 +274,7 @@ class _Grower:
             vlo = np.maximum(vlo, along + np.sqrt(np.maximum(self.v2min - c2, 0.0)) + 1e-6)
         jlo, jhi = lay.v_level_range(vlo, vhi)
         # three quarters of the draws take the fastest reachable speed, the rest are uniform
-        u = self.rng.uniform(0.0, 4.0, size=seg.shape)
+        u = 4.0 * self.rng.random(seg.shape)
         vl = np.where(u >= 1.0, jhi, np.minimum(jlo + (u * (jhi - jlo + 1)).astype(np.int64), jhi))
         v = lay.v_of(vl)
         return vl, v, pt + 2.0 * seg / (pv + v), jlo <= jhi
@@ -279,15 +282,18 @@ class _Grower:
     def _free(self, k: int, px: Num, py: Num, pt: Num, x: Num, y: Num, t: Num) -> np.ndarray:
         """True where the segment ending in block k misses every inflated obstacle (eq. 9).
 
-        Only (obstacle, individual) pairs whose boxes meet are tested: the obstacle's
-        circle swept over the individual's time window against the box its candidate
-        segments span (exact pruning, never drops a hit).
+        A large draw (over `PRUNE_ELEMENTS` obstacle-candidate elements) tests only the
+        obstacles, and with many of them the (obstacle, individual) pairs, whose boxes
+        meet: the obstacle's circle swept over the time window against the box the
+        candidate segments span (exact pruning, never drops a hit). A small draw tests
+        every obstacle of the block, which costs less than pruning.
         """
         obs = self.near[k]
         shape = np.broadcast_shapes(np.shape(x), np.shape(px))
         if obs.index.size == 0:
             return np.ones(shape, dtype=bool)
-        obs = _near_box(obs, px, py, pt, x, y, t)
+        if obs.index.size * math.prod(shape) > PRUNE_ELEMENTS:  # else testing all is cheaper
+            obs = _near_box(obs, px, py, pt, x, y, t)
         if obs.index.size == 0:
             return np.ones(shape, dtype=bool)
         if obs.index.size < _PAIR_MIN_OBSTACLES or len(shape) != 2:
