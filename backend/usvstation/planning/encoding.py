@@ -31,6 +31,8 @@ import numpy as np
 from usvstation.planning.problem import Problem
 from usvstation.scenario.options import IGAOptions
 
+PREFIX_TABLE_ELEMENTS = 1 << 18  # crossover mask table: at most 2 MB, else computed per call
+
 
 class InfeasibleProblem(ValueError):
     """The scenario admits no path of the encoded form; the message says why."""
@@ -172,6 +174,20 @@ class GeneLayout:
         hi = np.concatenate([[self.start[0]], top])
         lo = np.concatenate([bottom, [self.goal[0]]])
         return lo, hi
+
+    @functools.cached_property
+    def prefix_masks(self) -> np.ndarray | None:
+        """(n_bits + 1, G): row c holds, per gene, the mask of its bits whose index is below
+        c (the part a single-point crossover at c takes from the first parent); None when
+        the table would exceed `PREFIX_TABLE_ELEMENTS`."""
+        n_bits, n_genes = self.n_bits, self.n_genes
+        if (n_bits + 1) * n_genes > PREFIX_TABLE_ELEMENTS:
+            return None
+        bit = np.arange(n_bits + 1)[:, None]  # cut
+        first, width = self.gene_start[None, :], self.gene_bits[None, :]
+        before = np.clip(bit - first, 0, width)  # the gene's leading bits before the cut
+        full = (np.int64(1) << width) - 1
+        return full & ~((np.int64(1) << (width - before)) - 1)
 
     # --- bits <-> codes -----------------------------------------------------
     def bits_to_codes(self, bits: np.ndarray) -> np.ndarray:

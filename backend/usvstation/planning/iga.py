@@ -218,19 +218,25 @@ def single_point_crossover(
 
     `cut` = n_bits copies the parents unchanged.
     """
+    masks = layout.prefix_masks
+    if masks is not None:  # one gather: mask[c] holds, per gene, its bits before bit c
+        m = masks[cut]
+    else:
+        m = _prefix_mask(layout, cut)
+    swap = (a ^ b) & ~m  # the bits from `cut` on, where the parents differ
+    return a ^ swap, b ^ swap
+
+
+def _prefix_mask(layout: GeneLayout, cut: np.ndarray) -> np.ndarray:
+    """Per cut (P,) and gene: the gene's bits whose index is below the cut, (P, G)."""
     whole = cut >= layout.n_bits
-    cut = np.minimum(cut, layout.n_bits - 1)
-    g = layout.gene_of_bit[cut]
-    width = layout.gene_bits[g]
-    from_b = (np.int64(1) << (width - (cut - layout.gene_start[g]))) - 1  # low bits of gene g
-    from_b = np.where(whole, 0, from_b)
-    first = (np.arange(layout.n_genes) < g[:, None]) | whole[:, None]
-    c1, c2 = np.where(first, a, b), np.where(first, b, a)
-    rows = np.arange(a.shape[0])
-    ag, bg = a[rows, g], b[rows, g]
-    c1[rows, g] = (ag & ~from_b) | (bg & from_b)
-    c2[rows, g] = (bg & ~from_b) | (ag & from_b)
-    return c1, c2
+    g = layout.gene_of_bit[np.minimum(cut, layout.n_bits - 1)]
+    full = (np.int64(1) << layout.gene_bits) - 1
+    m = np.where(np.arange(layout.n_genes) < g[:, None], full, 0)
+    low = (np.int64(1) << (layout.gene_bits[g] - (cut - layout.gene_start[g]))) - 1
+    m[np.arange(cut.shape[0]), g] = full[g] & ~low
+    m[whole] = full
+    return m
 
 
 def mutate(

@@ -47,9 +47,9 @@ def smooth_path(x: np.ndarray, y: np.ndarray, t: np.ndarray, field: ObstacleFiel
             "collision_free": bool(free),
             "min_clearance_m": None if clearance is None else round(clearance, 6),
             "points": [
-                {"x": round(float(a), 6), "y": round(float(b), 6), "t": round(float(c), 6),
-                 "speed": round(float(s), 6), "heading_deg": round(float(h), 6)}
-                for (a, b, c), s, h in zip(pts, speed, heading, strict=True)
+                {"x": round(a, 6), "y": round(b, 6), "t": round(c, 6), "speed": round(s, 6),
+                 "heading_deg": round(h, 6)}
+                for a, b, c, s, h in np.column_stack([pts, speed, heading]).tolist()
             ],
         }
         if free:
