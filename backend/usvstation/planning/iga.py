@@ -218,11 +218,8 @@ def single_point_crossover(
 
     `cut` = n_bits copies the parents unchanged.
     """
-    masks = layout.prefix_masks
-    if masks is not None:  # one gather: mask[c] holds, per gene, its bits before bit c
-        m = masks[cut]
-    else:
-        m = _prefix_mask(layout, cut)
+    masks = layout.prefix_masks  # row c: per gene, its bits before bit c
+    m = masks[cut] if masks is not None else _prefix_mask(layout, cut)
     swap = (a ^ b) & ~m  # the bits from `cut` on, where the parents differ
     return a ^ swap, b ^ swap
 
