@@ -87,19 +87,15 @@ def first_turn(paths: PathBatch, problem: Problem) -> np.ndarray:
     return np.abs(np.mod(hull - problem.start_heading + np.pi, 2.0 * np.pi) - np.pi)
 
 
-def water_speed_bad(dx: Num, dy: Num, v0: Num, v1: Num, problem: Problem,
-                    length: Num | None = None) -> np.ndarray:
+def water_speed_bad(dx: Num, dy: Num, v0: Num, v1: Num, problem: Problem) -> np.ndarray:
     """True where a segment's speed through the water (ground velocity minus current) leaves
     [speed_min, speed_max] at either end, or the hull would make way astern (issue 12).
 
-    `length` is the segment's length when the caller has it. With u the unit course
-    and c the current, the water velocity is v u - c:
+    With u the unit course and c the current, the water velocity is v u - c:
     |v u - c|^2 = v (v - 2 u.c) + |c|^2, and its component along u is v - u.c.
     """
     cx, cy = problem.current
-    if length is None:
-        length = np.sqrt(dx * dx + dy * dy)
-    along = (dx * cx + dy * cy) / np.maximum(length, _EPS)
+    along = (dx * cx + dy * cy) / np.maximum(np.hypot(dx, dy), _EPS)
     c2 = cx * cx + cy * cy
     lo2, hi2 = (problem.speed_min * (1 - 1e-6)) ** 2, (problem.speed_max * (1 + 1e-6)) ** 2
     w0, w1 = v0 * (v0 - 2.0 * along) + c2, v1 * (v1 - 2.0 * along) + c2
@@ -217,8 +213,7 @@ class Evaluator:
             turn.append(first_turn(paths, problem) > problem.turn_max)
         if problem.current != (0.0, 0.0):
             vel.append(water_speed_bad(
-                paths.seg_dx, paths.seg_dy, paths.v[:, :-1], paths.v[:, 1:], problem,
-                paths.seg_len))
+                paths.seg_dx, paths.seg_dy, paths.v[:, :-1], paths.v[:, 1:], problem))
         return {"acc": [acc_bad], "vel": vel, "turn": turn}
 
     def _gate_counts(self, paths: PathBatch, turns: np.ndarray,

@@ -22,7 +22,6 @@ generations.
 
 from __future__ import annotations
 
-import math
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -35,7 +34,6 @@ from usvstation.planning.preheat import PreheatReport, preheat, random_levels
 from usvstation.planning.problem import Problem
 from usvstation.scenario.options import IGAOptions
 
-_LOG_AMP = (math.log(0.6), math.log(12.0) - math.log(0.6))  # local_reinit's bump, log m
 EVAL_CHUNK = 128  # paths per evaluation pass; the time budget is checked between passes
 
 
@@ -200,13 +198,11 @@ def _offspring(layout: GeneLayout, pop: _Population, n: int, opts: IGAOptions, p
         return pop.codes[:0]
     pop_n = pop.codes.shape[0]
     pairs = (n + 1) // 2
-    u = rng.random((2 * pairs, opts.tournament_size))  # floor(u k): uniform on 0..k-1
-    entrants = (u * pop_n).astype(np.int64)
+    entrants = rng.integers(0, pop_n, size=(2 * pairs, opts.tournament_size))
     winners = entrants[np.arange(2 * pairs), np.argmax(pop.fit[entrants], axis=1)]
     a, b = pop.codes[winners[:pairs]], pop.codes[winners[pairs:]]
-    u = rng.random((2, pairs))
-    cut = 1 + (u[1] * max(layout.n_bits - 1, 1)).astype(np.int64)  # a cut point in 1..n_bits-1
-    cut = np.where(u[0] < opts.crossover_rate, cut, layout.n_bits)
+    cross = rng.random(pairs) < opts.crossover_rate
+    cut = np.where(cross, rng.integers(1, max(layout.n_bits, 2), size=pairs), layout.n_bits)
     children = np.concatenate(single_point_crossover(layout, a, b, cut))[:n]
     return mutate(layout, children, pm, rng)
 
@@ -310,16 +306,13 @@ def local_reinit(
     x is redrawn inside its D_SL block and speeds move by one level.
     """
     n_mid = layout.n_mid
-    u = rng.random((n, 4 + n_mid))  # parent, centre, half-width, amplitude; one per waypoint
-    lv = parents[(u[:, 0] * parents.shape[0]).astype(np.int64)]
-    centre = (u[:, 1:2] * n_mid).astype(np.int64)
-    half = np.floor(u[:, 2:3] * 4.0)
+    lv = parents[rng.integers(0, parents.shape[0], size=n)]
+    centre = rng.integers(0, n_mid, size=(n, 1))
+    half = rng.integers(0, 4, size=(n, 1))
     weight = np.maximum(1.0 - np.abs(np.arange(n_mid) - centre) / (half + 1.0), 0.0)
-    # log-uniform in [0.6, 12] m, either side (the sign from the same draw's lower half)
-    side = u[:, 3:4]
-    amp = np.exp(_LOG_AMP[0] + _LOG_AMP[1] * np.abs(2.0 * side - 1.0)) / layout.y_res
-    amp = np.where(side < 0.5, -amp, amp)
-    u = u[:, 4:]
+    sign = np.where(rng.random((n, 1)) < 0.5, -1.0, 1.0)
+    amp = sign * np.exp(rng.uniform(np.log(0.6), np.log(12.0), size=(n, 1))) / layout.y_res
+    u = rng.random((n, n_mid))
     window = weight > 0.0
     xs, ys, vs = lv[:, 0 : 3 * n_mid : 3], lv[:, 1 : 3 * n_mid : 3], lv[:, 2 : 3 * n_mid : 3]
     xs[:] = np.where(window & (u < 0.3), (u * (layout.x_count / 0.3)).astype(np.int64), xs)

@@ -181,13 +181,12 @@ class _Grower:
         slope0 = walk.slope[idx, None]
         last = k == lay.n_mid - 1
 
-        u = rng.random((3, n, c))  # x level, bearing offset, the non-greedy choice's key
-        xl = (u[0] * lay.x_count[k]).astype(np.int64)
+        xl = rng.integers(0, lay.x_count[k], size=(n, c))
         x = lay.x_of(xl, k)
         dx = px - x  # > 0: the path steps towards the goal
         ax, ay = self._aim(k, px, walk.join_x[idx, None], walk.aim_y[idx, None])
         taper = min(1.0, max(0.2, (lay.n_mid - 1 - k) / 3.0))
-        offset = 2.0 * u[1] - 1.0
+        offset = rng.uniform(-1.0, 1.0, size=(n, c))
         if k == 0 and math.isnan(self.start_slope):
             lo, hi = -_MAX_SLOPE, _MAX_SLOPE
         else:
@@ -207,25 +206,25 @@ class _Grower:
             y = lay.y_of(yl)
         dy = y - py
         slope = np.arctan2(dy, dx)
-        seg = np.sqrt(dx * dx + dy * dy)
+        seg = np.hypot(dx, dy)
         vl, v, t, good = self._speed(pv, pt, seg, -dx / seg, dy / seg)
         if k > 0 or not math.isnan(self.start_slope):
             good &= np.abs(slope - slope0) <= prob.turn_max + _EPS
         if prob.current != (0.0, 0.0):
-            good &= ~water_speed_bad(-dx, dy, pv, v, prob, seg)
+            good &= ~water_speed_bad(x - px, dy, pv, v, prob)
         good &= self._free(k, px, py, pt, x, y, t)
         if last:
             gx, gy = float(lay.goal[0]), float(lay.goal[1])
             gdx, gdy = gx - x, gy - y
-            gseg = np.sqrt(gdx * gdx + gdy * gdy)
+            gseg = np.hypot(x - gx, y - gy)
             good &= np.abs(np.arctan2(gy - y, x - gx) - slope) <= prob.turn_max + _EPS
             gvl, gv, gt, gok = self._speed(v, t, gseg, gdx / gseg, gdy / gseg)
             if prob.current != (0.0, 0.0):
-                gok &= ~water_speed_bad(gdx, gdy, v, gv, prob, gseg)
+                gok &= ~water_speed_bad(gdx, gdy, v, gv, prob)
             good &= gok & self._free(k + 1, x, y, t, gx, gy, gt)
 
         placed = good.any(axis=1)
-        key = np.where(walk.greedy[idx, None], np.abs(offset), u[2])
+        key = np.where(walk.greedy[idx, None], np.abs(offset), rng.random((n, c)))
         col = np.argmin(np.where(good, key, np.inf), axis=1)
         rows = np.flatnonzero(placed)
         pick, who = (rows, col[rows]), idx[rows]
@@ -274,7 +273,7 @@ class _Grower:
             vlo = np.maximum(vlo, along + np.sqrt(np.maximum(self.v2min - c2, 0.0)) + 1e-6)
         jlo, jhi = lay.v_level_range(vlo, vhi)
         # three quarters of the draws take the fastest reachable speed, the rest are uniform
-        u = 4.0 * self.rng.random(seg.shape)
+        u = self.rng.uniform(0.0, 4.0, size=seg.shape)
         vl = np.where(u >= 1.0, jhi, np.minimum(jlo + (u * (jhi - jlo + 1)).astype(np.int64), jhi))
         v = lay.v_of(vl)
         return vl, v, pt + 2.0 * seg / (pv + v), jlo <= jhi
