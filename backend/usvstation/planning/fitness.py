@@ -87,15 +87,19 @@ def first_turn(paths: PathBatch, problem: Problem) -> np.ndarray:
     return np.abs(np.mod(hull - problem.start_heading + np.pi, 2.0 * np.pi) - np.pi)
 
 
-def water_speed_bad(dx: Num, dy: Num, v0: Num, v1: Num, problem: Problem) -> np.ndarray:
+def water_speed_bad(dx: Num, dy: Num, v0: Num, v1: Num, problem: Problem,
+                    length: Num | None = None) -> np.ndarray:
     """True where a segment's speed through the water (ground velocity minus current) leaves
     [speed_min, speed_max] at either end, or the hull would make way astern (issue 12).
 
-    With u the unit course and c the current, the water velocity is v u - c:
+    `length` is np.hypot(dx, dy) when the caller has it. With u the unit course and c
+    the current, the water velocity is v u - c:
     |v u - c|^2 = v (v - 2 u.c) + |c|^2, and its component along u is v - u.c.
     """
     cx, cy = problem.current
-    along = (dx * cx + dy * cy) / np.maximum(np.hypot(dx, dy), _EPS)
+    if length is None:
+        length = np.hypot(dx, dy)
+    along = (dx * cx + dy * cy) / np.maximum(length, _EPS)
     c2 = cx * cx + cy * cy
     lo2, hi2 = (problem.speed_min * (1 - 1e-6)) ** 2, (problem.speed_max * (1 + 1e-6)) ** 2
     w0, w1 = v0 * (v0 - 2.0 * along) + c2, v1 * (v1 - 2.0 * along) + c2
@@ -213,7 +217,8 @@ class Evaluator:
             turn.append(first_turn(paths, problem) > problem.turn_max)
         if problem.current != (0.0, 0.0):
             vel.append(water_speed_bad(
-                paths.seg_dx, paths.seg_dy, paths.v[:, :-1], paths.v[:, 1:], problem))
+                paths.seg_dx, paths.seg_dy, paths.v[:, :-1], paths.v[:, 1:], problem,
+                paths.seg_len))
         return {"acc": [acc_bad], "vel": vel, "turn": turn}
 
     def _gate_counts(self, paths: PathBatch, turns: np.ndarray,
@@ -226,11 +231,10 @@ class Evaluator:
 
     def _gate_any(self, paths: PathBatch, turns: np.ndarray) -> np.ndarray:
         """True where any gate but G_col fails: `_gate_counts` reduced to one flag per path."""
-        out = np.zeros(len(paths), dtype=bool)
-        for masks in self._gate_masks(paths, turns).values():
-            for m in masks:
-                out |= m.any(axis=1) if m.ndim == 2 else m
-        return out
+        any_of = np.logical_or.reduce  # the ufunc itself: no wrapper per call
+        flags = [any_of(m, axis=1) if m.ndim == 2 else m
+                 for masks in self._gate_masks(paths, turns).values() for m in masks]
+        return any_of(flags)
 
     def _terms(self, paths: PathBatch, turns: np.ndarray) -> dict[str, np.ndarray]:
         """The four terms of eq. 12, raw and normalised, per path."""

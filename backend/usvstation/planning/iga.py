@@ -34,6 +34,7 @@ from usvstation.planning.preheat import PreheatReport, preheat, random_levels
 from usvstation.planning.problem import Problem
 from usvstation.scenario.options import IGAOptions
 
+_BUMP_LOG_M = (float(np.log(0.6)), float(np.log(12.0)))  # local_reinit's bump amplitude, log m
 EVAL_CHUNK = 128  # paths per evaluation pass; the time budget is checked between passes
 
 
@@ -311,7 +312,7 @@ def local_reinit(
     half = rng.integers(0, 4, size=(n, 1))
     weight = np.maximum(1.0 - np.abs(np.arange(n_mid) - centre) / (half + 1.0), 0.0)
     sign = np.where(rng.random((n, 1)) < 0.5, -1.0, 1.0)
-    amp = sign * np.exp(rng.uniform(np.log(0.6), np.log(12.0), size=(n, 1))) / layout.y_res
+    amp = sign * np.exp(rng.uniform(*_BUMP_LOG_M, size=(n, 1))) / layout.y_res
     u = rng.random((n, n_mid))
     window = weight > 0.0
     xs, ys, vs = lv[:, 0 : 3 * n_mid : 3], lv[:, 1 : 3 * n_mid : 3], lv[:, 2 : 3 * n_mid : 3]

@@ -96,16 +96,19 @@ class _Obstacles:
 
 @dataclass
 class _Walk:
-    """Per-individual state of the walk towards the goal."""
+    """Per-individual state of the walk towards the goal.
 
-    x: np.ndarray
-    y: np.ndarray
-    t: np.ndarray
-    v: np.ndarray
-    slope: np.ndarray  # bearing of the last segment against -x, rad (nan before the first)
+    `state` (7, count) holds one row per quantity, so that a draw gathers the state of
+    its individuals in one call: x, y, t, v of the last waypoint placed; the bearing of
+    the last segment against -x (rad, nan before the first); where a recovery aims to
+    join the ramp axis; the y it aims for until then (the axis, or a wide detour).
+    """
+
+    state: np.ndarray  # rows: X, Y, T, V, SLOPE, JOIN_X, AIM_Y
     greedy: np.ndarray  # keeps the admissible candidate closest to the aim
-    join_x: np.ndarray  # recovery: where this individual aims to join the ramp axis
-    aim_y: np.ndarray  # y it aims for until join_x: the axis, or a wide detour (issue 12)
+
+    X, Y, T, V, SLOPE, JOIN_X, AIM_Y = range(7)
+    PLACED = 5  # the first rows, which every placed waypoint updates
 
 
 class _Grower:
@@ -147,13 +150,11 @@ class _Grower:
         lay = self.layout
         levels = np.zeros((count, lay.n_genes), dtype=np.int64)
         alive = np.ones(count, dtype=bool)
-        walk = _Walk(
-            x=np.full(count, lay.start[0]), y=np.full(count, lay.start[1]),
-            t=np.zeros(count), v=np.full(count, lay.start_speed),
-            slope=np.full(count, self.start_slope), greedy=self.rng.random(count) < 0.5,
-            join_x=self.rng.uniform(self.run_in, float(lay.start[0]), size=count),
-            aim_y=self._aim_y(count),
-        )
+        greedy = self.rng.random(count) < 0.5
+        join_x = self.rng.uniform(self.run_in, float(lay.start[0]), size=count)
+        start = (lay.start[0], lay.start[1], 0.0, lay.start_speed, self.start_slope)
+        walk = _Walk(np.vstack([np.repeat(np.array(start)[:, None], count, axis=1),
+                                join_x, self._aim_y(count)]), greedy)
         for k in range(lay.n_mid):
             pending = np.flatnonzero(alive)
             for attempt in range(self.opts.preheat_retries):
@@ -177,14 +178,13 @@ class _Grower:
         """
         lay, prob, rng = self.layout, self.problem, self.rng
         n, c = idx.size, self.opts.candidates
-        px, py, pt, pv = (a[idx, None] for a in (walk.x, walk.y, walk.t, walk.v))
-        slope0 = walk.slope[idx, None]
+        px, py, pt, pv, slope0, join_x, aim_y = walk.state[:, idx, None]
         last = k == lay.n_mid - 1
 
         xl = rng.integers(0, lay.x_count[k], size=(n, c))
         x = lay.x_of(xl, k)
         dx = px - x  # > 0: the path steps towards the goal
-        ax, ay = self._aim(k, px, walk.join_x[idx, None], walk.aim_y[idx, None])
+        ax, ay = self._aim(k, px, join_x, aim_y)
         taper = min(1.0, max(0.2, (lay.n_mid - 1 - k) / 3.0))
         offset = rng.uniform(-1.0, 1.0, size=(n, c))
         if k == 0 and math.isnan(self.start_slope):
@@ -211,7 +211,7 @@ class _Grower:
         if k > 0 or not math.isnan(self.start_slope):
             good &= np.abs(slope - slope0) <= prob.turn_max + _EPS
         if prob.current != (0.0, 0.0):
-            good &= ~water_speed_bad(x - px, dy, pv, v, prob)
+            good &= ~water_speed_bad(x - px, dy, pv, v, prob, seg)
         good &= self._free(k, px, py, pt, x, y, t)
         if last:
             gx, gy = float(lay.goal[0]), float(lay.goal[1])
@@ -220,7 +220,7 @@ class _Grower:
             good &= np.abs(np.arctan2(gy - y, x - gx) - slope) <= prob.turn_max + _EPS
             gvl, gv, gt, gok = self._speed(v, t, gseg, gdx / gseg, gdy / gseg)
             if prob.current != (0.0, 0.0):
-                gok &= ~water_speed_bad(gdx, gdy, v, gv, prob)
+                gok &= ~water_speed_bad(gdx, gdy, v, gv, prob, gseg)
             good &= gok & self._free(k + 1, x, y, t, gx, gy, gt)
 
         placed = good.any(axis=1)
@@ -231,8 +231,7 @@ class _Grower:
         levels[who, 3 * k] = xl[pick]
         levels[who, 3 * k + 1] = yl[pick]
         levels[who, 3 * k + 2] = vl[pick]
-        walk.slope[who] = slope[pick]
-        walk.x[who], walk.y[who], walk.t[who], walk.v[who] = x[pick], y[pick], t[pick], v[pick]
+        walk.state[: _Walk.PLACED, who] = np.stack((x, y, t, v, slope))[:, rows, col[rows]]
         if last:
             levels[who, -1] = gvl[pick]
         return placed
@@ -305,8 +304,8 @@ class _Grower:
         free = np.ones(shape, dtype=bool)
         step = max(1, KERNEL_ELEMENTS // max(free.size, 1))
         for i in range(0, obs.index.size, step):
-            part = _Obstacles(*(a[i:i + step] for a in (obs.index, obs.cx, obs.cy, obs.vx,
-                                                         obs.vy, obs.r)))
+            part = obs if step >= obs.index.size else _Obstacles(*(
+                a[i:i + step] for a in (obs.index, obs.cx, obs.cy, obs.vx, obs.vy, obs.r)))
             ex0, ey0 = part.relative(px, py, pt)
             ex1, ey1 = part.relative(x, y, t)
             hits = hits_from_relative(ex0, ey0, ex1, ey1, part.r)  # (m, n, C)
