@@ -1,10 +1,10 @@
 """The planner bench's summary figures are plain arithmetic over its rows."""
 
-from usvstation.bench.planner import suite_median_ms
+from usvstation.bench.planner import pooled_median
 
 
-def test_the_suite_median_pools_every_scenario_and_seed():
-    rows = [{"plan_time_ms": [10.0, 30.0, 20.0]}, {"plan_time_ms": [40.0, 50.0]}]
-    assert suite_median_ms(rows) == 30.0  # of 10, 20, 30, 40, 50
-    assert suite_median_ms([rows[0], {"plan_time_ms": [40.0]}]) == 25.0  # even count
-    assert suite_median_ms([{"plan_time_ms": [1.234567]}]) == 1.23
+def test_the_pooled_median_takes_every_value_of_every_row():
+    rows = [{"n": [1, 3, 2]}, {"n": [4, 5]}]
+    assert pooled_median(rows, "n") == 3  # of 1, 2, 3, 4, 5
+    assert pooled_median([rows[0], {"n": [4]}], "n") == 2.5  # even count
+    assert pooled_median([{"n": [1.234567]}], "n") == 1.23

@@ -40,8 +40,8 @@ def test_single_point_crossover_swaps_the_bit_strings_at_the_cut(lay, seed):
 @given(st.sampled_from(LAYOUTS), st.integers(0, 2**32 - 1))
 def test_the_crossover_mask_table_equals_the_masks_computed_per_cut(lay, seed):
     cut = np.random.default_rng(seed).integers(1, lay.n_bits + 1, size=64)
-    assert lay.prefix_masks is not None  # small layouts use the table
-    np.testing.assert_array_equal(lay.prefix_masks[cut], iga._prefix_mask(lay, cut))
+    assert lay._prefix_table is not None  # small layouts use the table
+    np.testing.assert_array_equal(lay.prefix_masks(cut), lay._prefix_of(cut))
 
 
 @settings(max_examples=30, deadline=None)

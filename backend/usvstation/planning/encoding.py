@@ -175,17 +175,23 @@ class GeneLayout:
         lo = np.concatenate([bottom, [self.goal[0]]])
         return lo, hi
 
+    def prefix_masks(self, cut: np.ndarray) -> np.ndarray:
+        """(P, G) for cuts (P,) in 0..n_bits: per gene, the mask of its bits whose index is
+        below the cut (the part a single-point crossover there takes from the first
+        parent). Read from a table of every cut when it has at most
+        `PREFIX_TABLE_ELEMENTS` entries, else computed."""
+        table = self._prefix_table
+        return table[cut] if table is not None else self._prefix_of(cut)
+
     @functools.cached_property
-    def prefix_masks(self) -> np.ndarray | None:
-        """(n_bits + 1, G): row c holds, per gene, the mask of its bits whose index is below
-        c (the part a single-point crossover at c takes from the first parent); None when
-        the table would exceed `PREFIX_TABLE_ELEMENTS`."""
-        n_bits, n_genes = self.n_bits, self.n_genes
-        if (n_bits + 1) * n_genes > PREFIX_TABLE_ELEMENTS:
+    def _prefix_table(self) -> np.ndarray | None:
+        if (self.n_bits + 1) * self.n_genes > PREFIX_TABLE_ELEMENTS:
             return None
-        bit = np.arange(n_bits + 1)[:, None]  # cut
-        first, width = self.gene_start[None, :], self.gene_bits[None, :]
-        before = np.clip(bit - first, 0, width)  # the gene's leading bits before the cut
+        return self._prefix_of(np.arange(self.n_bits + 1))
+
+    def _prefix_of(self, cut: np.ndarray) -> np.ndarray:
+        width = self.gene_bits
+        before = np.clip(cut[:, None] - self.gene_start, 0, width)  # leading bits before it
         full = (np.int64(1) << width) - 1
         return full & ~((np.int64(1) << (width - before)) - 1)
 
@@ -267,7 +273,7 @@ class GeneLayout:
         base, res, lo = self._affine
         pos = levels + base
         if self.cone_tan is not None:
-            pos[:, self.cone_gene] -= self.cone_m[levels[:, self.cone_gene - 1]]
+            pos[:, self.cone_gene] -= self.cone_half_levels(levels[:, self.cone_gene - 1])
         value = pos * res + lo  # (P, G)
         xyv = np.empty((3, self.n_waypoints, p))
         xyv[:, 1:-1, :] = value[:, : 3 * n_mid].reshape(p, n_mid, 3).transpose(2, 1, 0)

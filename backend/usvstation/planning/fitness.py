@@ -31,12 +31,17 @@ import numpy as np
 
 from usvstation.planning.encoding import PathBatch
 from usvstation.planning.problem import Problem
-from usvstation.planning.xyt import Num, hits_from_relative, polyline_hits, relative_positions
+from usvstation.planning.xyt import (
+    PRUNE_ELEMENTS,
+    Num,
+    hits_from_relative,
+    polyline_hits,
+    relative_positions,
+)
 from usvstation.scenario.options import IGAOptions
 
 _EPS = 1e-9
 BRUTE_CHUNK = 1 << 18  # elements per eq. 9 pass: 2 MB a temporary
-PRUNE_ELEMENTS = 4096  # pair-path elements from which the pairs are pruned by x-y-t boxes
 
 
 @dataclass(frozen=True)
@@ -268,13 +273,12 @@ class Evaluator:
         feasible = ~self._gate_any(paths, turns)
         rows = np.flatnonzero(feasible)
         if rows.size and self.problem.obstacles.count:
-            x, y, t = paths.x.T, paths.y.T, paths.t.T
             if self.pairs is None:
                 feasible[rows] = self.collisions(paths.rows(rows)) == 0
-            elif rows.size == len(paths):
-                feasible[rows] = self._pair_collisions(x, y, t) == 0
             else:
-                feasible[rows] = self._pair_collisions(x[:, rows], y[:, rows], t[:, rows]) == 0
+                pick = slice(None) if rows.size == len(paths) else rows
+                x, y, t = (a.T[:, pick] for a in (paths.x, paths.y, paths.t))
+                feasible[rows] = self._pair_collisions(x, y, t) == 0
         return self._eq12(self._terms(paths, turns), feasible)
 
     def __call__(self, paths: PathBatch) -> Evaluation:

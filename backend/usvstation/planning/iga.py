@@ -215,22 +215,8 @@ def single_point_crossover(
 
     `cut` = n_bits copies the parents unchanged.
     """
-    masks = layout.prefix_masks  # row c: per gene, its bits before bit c
-    m = masks[cut] if masks is not None else _prefix_mask(layout, cut)
-    swap = (a ^ b) & ~m  # the bits from `cut` on, where the parents differ
+    swap = (a ^ b) & ~layout.prefix_masks(cut)  # the bits from `cut` on, where they differ
     return a ^ swap, b ^ swap
-
-
-def _prefix_mask(layout: GeneLayout, cut: np.ndarray) -> np.ndarray:
-    """Per cut (P,) and gene: the gene's bits whose index is below the cut, (P, G)."""
-    whole = cut >= layout.n_bits
-    g = layout.gene_of_bit[np.minimum(cut, layout.n_bits - 1)]
-    full = (np.int64(1) << layout.gene_bits) - 1
-    m = np.where(np.arange(layout.n_genes) < g[:, None], full, 0)
-    low = (np.int64(1) << (layout.gene_bits[g] - (cut - layout.gene_start[g]))) - 1
-    m[np.arange(cut.shape[0]), g] = full[g] & ~low
-    m[whole] = full
-    return m
 
 
 def mutate(

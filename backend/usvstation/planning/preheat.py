@@ -47,7 +47,7 @@ from usvstation.geometry import angle_diff
 from usvstation.planning.encoding import GeneLayout
 from usvstation.planning.fitness import water_speed_bad
 from usvstation.planning.problem import Problem
-from usvstation.planning.xyt import Num, hits_from_relative
+from usvstation.planning.xyt import PRUNE_ELEMENTS, Num, hits_from_relative
 from usvstation.scenario.options import IGAOptions
 
 _MAX_SLOPE = math.radians(80.0)  # steepest segment against the x step
@@ -55,7 +55,6 @@ _SPREAD = math.radians(55.0)  # bearing spread of candidates around the aim
 _EPS = 1e-9
 _PAIR_MIN_OBSTACLES = 16  # from this many obstacles on, candidates are paired per individual
 KERNEL_ELEMENTS = 1 << 18  # elements per eq. 9 pass: 2 MB a temporary
-PRUNE_ELEMENTS = 4096  # obstacle-candidate elements from which a draw prunes by x-y-t box
 
 
 @dataclass
@@ -104,11 +103,10 @@ class _Walk:
     join the ramp axis; the y it aims for until then (the axis, or a wide detour).
     """
 
-    state: np.ndarray  # rows: X, Y, T, V, SLOPE, JOIN_X, AIM_Y
+    state: np.ndarray  # rows: x, y, t, v, slope, join_x, aim_y
     greedy: np.ndarray  # keeps the admissible candidate closest to the aim
 
-    X, Y, T, V, SLOPE, JOIN_X, AIM_Y = range(7)
-    PLACED = 5  # the first rows, which every placed waypoint updates
+    PLACED = 5  # the first rows (x, y, t, v, slope), which every placed waypoint updates
 
 
 class _Grower:

@@ -33,6 +33,10 @@ import numpy as np
 
 Num = np.ndarray | float  # anything that broadcasts
 
+# Elements (obstacle or pair x path or candidate) from which pruning by x-y-t boxes pays:
+# below it, testing everything costs fewer NumPy calls than the pruning (evaluator, preheating).
+PRUNE_ELEMENTS = 4096
+
 
 @dataclass(frozen=True)
 class ObstacleField:
