@@ -5,11 +5,12 @@ from __future__ import annotations
 import asyncio
 import json
 import logging
-import time
 from collections import deque
+from collections.abc import Callable
 
+from usvstation.clock import REAL_CLOCK, Clock
 from usvstation.config import ExposureError, Settings, Tokens, resolve_token
-from usvstation.link.protocol import BoatReport
+from usvstation.link.protocol import BoatReport, LinkEvent
 from usvstation.records import PlanDocument, StationHealth
 from usvstation.scenario import Origin, Scenario, bundled_scenario_dir, parse_scenario
 from usvstation.services.alerts import LinkAlerts
@@ -17,8 +18,9 @@ from usvstation.services.boat import BoatService
 from usvstation.services.hub import LiveHub
 from usvstation.services.monitor import MonitorService
 from usvstation.services.plans import PlanService
-from usvstation.services.simboat import EmbeddedSim
+from usvstation.services.simboat import EmbeddedSim, InProcessSim
 from usvstation.services.world import WorldService
+from usvstation.sim.vehicle import Vehicle
 from usvstation.store.alerts import AlertStore
 from usvstation.store.db import Store
 from usvstation.viz.feed import ThreeDFeed
@@ -34,7 +36,8 @@ class LoopLagMonitor:
     """How late the event loop wakes a task that sleeps LAG_PROBE_S: the worst of the last
     minute and of the whole run (a blocking call shows up as its own length)."""
 
-    def __init__(self) -> None:
+    def __init__(self, clock: Clock = REAL_CLOCK) -> None:
+        self.clock = clock
         self.samples: deque[tuple[float, float]] = deque()  # (monotonic time, lag s)
         self.worst_ever = 0.0
         self._task: asyncio.Task | None = None
@@ -48,9 +51,9 @@ class LoopLagMonitor:
 
     async def _run(self) -> None:
         while True:
-            t0 = time.monotonic()
-            await asyncio.sleep(LAG_PROBE_S)
-            now = time.monotonic()
+            t0 = self.clock.now()
+            await self.clock.sleep(LAG_PROBE_S)
+            now = self.clock.now()
             self.record(now, max(0.0, now - t0 - LAG_PROBE_S))
 
     def record(self, now: float, lag: float) -> None:
@@ -64,41 +67,50 @@ class LoopLagMonitor:
         self.samples.append((now, lag))  # decreasing lags: the head is the window's worst
 
     def worst_last_minute(self) -> float:
-        cutoff = time.monotonic() - LAG_WINDOW_S
+        cutoff = self.clock.now() - LAG_WINDOW_S
         while self.samples and self.samples[0][0] < cutoff:
             self.samples.popleft()
         return self.samples[0][1] if self.samples else 0.0
 
 
 class Station:
-    """Composition root; `start` and `stop` run inside the server's lifespan."""
+    """Composition root; `start` and `stop` run inside the server's lifespan.
 
-    def __init__(self, settings: Settings) -> None:
-        self.settings = settings
+    Every part gets `clock` (clock.py). `in_process` is the station of simulated time (sea
+    trials, in-process tests; `clock` a SimClock): plans run inline, the simulated boat
+    (`--link sim`) runs on the station's loop over an in-memory pipe, the simulated sea
+    feeds the world directly, and the 3D view's server is not started."""
+
+    def __init__(self, settings: Settings, clock: Clock = REAL_CLOCK, *,
+                 in_process: bool = False) -> None:
+        self.settings, self.clock, self.in_process = settings, clock, in_process
         self.token = resolve_token(settings)
         viewer = settings.viewer_token
         if viewer is not None and (not viewer or viewer == self.token):
             raise ExposureError("--viewer-token must be non-empty and differ from the operator "
                                 "token")
         self.tokens = Tokens(self.token, viewer)
-        self.store = Store(settings.data_dir)
+        self.store = Store(settings.data_dir, clock)
         self.hub = LiveHub()
-        self.plans = PlanService(self.store, self.hub, settings.plan_workers,
-                                 timeout_s=settings.plan_timeout_s,
+        self.plans = PlanService(self.store, self.hub, 0 if in_process else settings.plan_workers,
+                                 timeout_s=settings.plan_timeout_s, clock=clock,
                                  memory_mb=settings.plan_memory_mb, queue_max=settings.plan_queue)
         self.view = ThreeDView("127.0.0.1", settings.viser_port)  # served to browsers at /3d/
-        self.lag = LoopLagMonitor()
+        self.lag = LoopLagMonitor(clock)
         self._watch: asyncio.Task | None = None
         self.started = self.stopped = False
-        self.boat = BoatService(settings, self.store, self.hub, self.plans)
-        self.sim: EmbeddedSim | None = None
+        self.boat = BoatService(settings, self.store, self.hub, self.plans, clock=clock)
+        self.sim: EmbeddedSim | InProcessSim | None = None
         self.hub.observers.append(ThreeDFeed(self.view, self._plan_of_mission).on_event)
         self.world = WorldService(self.hub, settings.nmea, simulate=settings.link == "sim",
-                                  sim_speed=settings.sim_speed)
+                                  sim_speed=settings.sim_speed, clock=clock,
+                                  sea_over_udp=not in_process)
         self.alerts = AlertStore(self.store)
         self.monitor = MonitorService(self.hub, self.alerts, self.world, self.boat, self.plans,
-                                      settings.replan)
+                                      settings.replan, clock=clock)
         self.link_alerts = LinkAlerts(self.monitor.raise_alert)
+        # in_process: builds the simulated boat's vehicle (a sea trial's sensors and hull)
+        self.sim_vehicle: Callable[[Scenario], Vehicle] | None = None
 
     async def start(self) -> None:
         """Start everything (once; the server's lifespan calls it again harmlessly)."""
@@ -109,7 +121,8 @@ class Station:
         self.store.start()
         await self.plans.start()
         scenario = await self.working_scenario()
-        await asyncio.to_thread(self.view.start)
+        if not self.in_process:
+            await asyncio.to_thread(self.view.start)
         self.view.show_scenario(scenario)
         if scenario.origin is None:
             origin = await self.default_origin()
@@ -118,12 +131,18 @@ class Station:
                         scenario.name, origin.lat, origin.lon, origin.ramp_bearing_deg)
             scenario = scenario.model_copy(update={"origin": origin})
         await self.world.start(scenario)
-        device = None
-        if self.settings.link == "sim":  # the embedded simulated boat on a pty
+        device = factory = None
+        if self.settings.link == "sim" and self.in_process:  # on this loop, in memory
+            self.sim = InProcessSim(scenario, self.settings, self.boat.key, self.clock,
+                                    self.sim_vehicle)
+            self.sim.start()
+            device, factory = "memory", self.sim.station_stream
+        elif self.settings.link == "sim":  # the embedded simulated boat on a pty
             self.sim = EmbeddedSim(scenario, self.settings, self.boat.key)
             await asyncio.to_thread(self.sim.start)
             device = self.sim.device
-        await self.boat.start(scenario, device, simulated=self.sim is not None)
+        await self.boat.start(scenario, device, simulated=self.sim is not None,
+                              stream_factory=factory)
         if self.boat.link is not None:
             # the moving ramp: its pose streamed to the boat, telemetry x, y in its frame
             self.world.pose_listeners.append(self.boat.link.protocol.set_ramp_pose)
@@ -133,7 +152,7 @@ class Station:
             self.boat.link.add_listener(self._publish_heartbeat)
         self._watch = asyncio.get_running_loop().create_task(self._watch_health())
 
-    def _publish_heartbeat(self, ev: object) -> None:
+    def _publish_heartbeat(self, ev: LinkEvent) -> None:
         """Each boat report (USV_MISSION_STATE, about 1 Hz) to the live clients with the
         link's counters (as in GET /api/boat `link`), so no console polls for them."""
         if isinstance(ev, BoatReport):
@@ -152,9 +171,12 @@ class Station:
         await self.monitor.stop()
         await self.world.stop()
         await self.boat.stop()
-        if self.sim is not None:
+        if isinstance(self.sim, InProcessSim):
+            await self.sim.stop()
+        elif self.sim is not None:
             await asyncio.to_thread(self.sim.stop)
-        await asyncio.to_thread(self.view.stop)
+        if not self.in_process:
+            await asyncio.to_thread(self.view.stop)
         await self.plans.stop()
         await asyncio.to_thread(self.store.close)
 
@@ -182,7 +204,7 @@ class Station:
                 self.hub.publish("health", {"status": h["status"], "reasons": h["reasons"],
                                             "telemetry_writer": h["telemetry_writer"]})
                 last = now
-            await asyncio.sleep(0.5)
+            await self.clock.sleep(0.5)
 
     async def set_working_scenario(self, scenario: Scenario) -> None:
         await asyncio.to_thread(self.store.set_setting, "scenario",
@@ -204,7 +226,7 @@ class Station:
         if w.error is not None:
             reasons.append(f"telemetry writer: {w.error}")
         plans = self.plans.health()
-        if plans["workers_alive"] == 0 and self.plans.started:
+        if plans["workers"] and plans["workers_alive"] == 0 and self.plans.started:
             reasons.append("no plan worker alive")
         return {
             "status": "degraded" if reasons else "ok",

@@ -12,7 +12,14 @@ from usvstation.config import Settings
 from usvstation.geo import RampFrame
 from usvstation.link import wire
 from usvstation.link.mavlink import usv_recovery as mav
-from usvstation.services.boat import BoatError, BoatService
+from usvstation.services.boat import BoatService
+from usvstation.services.errors import (
+    Conflict,
+    LinkUnavailable,
+    MissionMismatch,
+    NoAnswer,
+    NotFound,
+)
 from usvstation.services.hub import LiveHub
 from usvstation.services.missions import (
     TRANSITIONS,
@@ -152,12 +159,10 @@ def test_link_down_is_503(service):
     async def body(svc, pipe, boat, plans):
         plans.add("p")
         for call in (svc.command("hold"), svc.create_mission("p"), svc.verify("nope")):
-            with pytest.raises(BoatError) as err:
+            with pytest.raises((LinkUnavailable, NotFound)):
                 await call
-            assert err.value.status in (503, 404)
-        with pytest.raises(BoatError, match="link is down") as err:
+        with pytest.raises(LinkUnavailable, match="link is down"):
             await svc.command("hold")
-        assert err.value.status == 503
 
     service(body, boat_on=False)
 
@@ -165,37 +170,33 @@ def test_link_down_is_503(service):
 def test_no_answer_is_504(service):
     async def body(svc, pipe, boat, plans):
         pipe.drop = lambda f: f[7] == mav.MAVLINK_MSG_ID_COMMAND_INT  # commands never arrive
-        with pytest.raises(BoatError, match="did not acknowledge HOLD") as err:
+        with pytest.raises(NoAnswer, match="did not acknowledge HOLD"):
             await svc.command("hold")
-        assert err.value.status == 504
 
     service(body)
 
 
 def test_start_names_its_mission_and_409s_for_no_mission_or_another(service):
     async def body(svc, pipe, boat, plans):
-        with pytest.raises(BoatError, match="no verified mission"):
+        with pytest.raises(Conflict, match="no verified mission"):
             await svc.command("start")
         a = await _upload(svc, plans, "a")
-        with pytest.raises(BoatError, match="send mission_id"):
+        with pytest.raises(Conflict, match="send mission_id"):
             await svc.command("start")
-        with pytest.raises(BoatError, match="no mission 'zzz'") as err:
+        with pytest.raises(NotFound, match="no mission 'zzz'"):
             await svc.command("start", "zzz")
-        assert err.value.status == 404
         assert svc.missions[a].state == MissionStatus.VERIFIED
         b = await _upload(svc, plans, "b", y_offset=2.0)
         await _wait(lambda: svc.missions[a].state == MissionStatus.GONE)
-        with pytest.raises(BoatError, match="holds another mission") as err:
+        with pytest.raises(MissionMismatch, match="holds another mission"):
             await svc.command("start", a)
-        assert err.value.status == 409
         answer = await svc.command("start", b)
         assert answer["result"] == "ACCEPTED" and answer["mission"] == b
         await _wait(lambda: svc.missions[b].state == MissionStatus.ACTIVE)
         await svc.command("abort")
         await _wait(lambda: svc.missions[b].state == MissionStatus.ABORTED)
-        with pytest.raises(BoatError, match="holds no mission") as err:
+        with pytest.raises(MissionMismatch, match="holds no mission"):
             await svc.command("start", b)
-        assert err.value.status == 409
 
     service(body)
 
@@ -205,9 +206,8 @@ def test_one_upload_at_a_time_and_verify_compares_item_by_item(service):
         plans.add("a")
         plans.add("b")
         first = await svc.create_mission("a")
-        with pytest.raises(BoatError, match="one upload at a time") as err:
+        with pytest.raises(Conflict, match="one upload at a time"):
             await svc.create_mission("b")
-        assert err.value.status == 409
         await _wait(lambda: svc.missions[first["id"]].state == MissionStatus.VERIFIED)
         report = await svc.verify(first["id"])
         assert report["identical"] and report["count"] == 6 and report["differences"] == []

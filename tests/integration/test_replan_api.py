@@ -9,6 +9,7 @@ from serverutil import TOKEN, running_station
 from usvstation.config import Settings
 from usvstation.planning.validate import plan_violations
 from usvstation.scenario import load_scenario, scenario_at
+from usvstation.services.errors import Conflict
 from usvstation.services.plans import scenario_from_boat
 
 AUTH = {"Authorization": f"Bearer {TOKEN}"}
@@ -53,8 +54,8 @@ def test_plan_from_the_boats_latest_telemetry(station):
 
 
 def test_from_boat_without_telemetry_is_one_clear_line():
-    """The route answers 409 with this ValueError's text (no boat position yet)."""
-    with pytest.raises(ValueError, match=r"^from_boat: no telemetry with a ramp-frame position"):
+    """The route answers 409 with this Conflict's text (no boat position yet)."""
+    with pytest.raises(Conflict, match=r"^from_boat: no telemetry with a ramp-frame position"):
         scenario_from_boat(load_scenario("case1"), None, None)
-    with pytest.raises(ValueError, match=r"^from_boat: no telemetry"):
+    with pytest.raises(Conflict, match=r"^from_boat: no telemetry"):
         scenario_from_boat(load_scenario("case1"), {"x": None, "ramp_heading_deg": None}, 3.0)

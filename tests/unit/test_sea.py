@@ -10,7 +10,7 @@ import pytest
 
 from usvstation.scenario import ScenarioError, load_scenario, parse_scenario
 from usvstation.shipinputs.decode import SentenceDecoder, apply_reports
-from usvstation.sim.sea import SeaModel, SimulatedSea
+from usvstation.sim.sea import SeaModel, SimulatedSea, UdpSender
 from usvstation.world.model import World
 
 BASE = load_scenario("case1").model_dump(mode="json")
@@ -100,8 +100,8 @@ def test_simulated_sea_sends_udp_and_records_truth() -> None:
         rx = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
         rx.bind(("127.0.0.1", 0))
         rx.setblocking(False)
-        sea = SimulatedSea(parse_scenario(sea_scenario()), rx.getsockname(), rate_hz=5.0,
-                           sim_speed=10.0)
+        sender = UdpSender(rx.getsockname())
+        sea = SimulatedSea(parse_scenario(sea_scenario()), sender, rate_hz=5.0, sim_speed=10.0)
         stop = asyncio.Event()
         task = asyncio.create_task(sea.run(stop))
         loop = asyncio.get_running_loop()
@@ -111,6 +111,7 @@ def test_simulated_sea_sends_udp_and_records_truth() -> None:
         stop.set()
         await task
         rx.close()
+        sender.close()
         dec = SentenceDecoder()
         for data in got:
             dec.feed(data)

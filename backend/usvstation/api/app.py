@@ -22,8 +22,22 @@ from usvstation.api.guard import Guard, GuardConfig
 from usvstation.api.planners import planners_router
 from usvstation.api.view3d import mount_view3d
 from usvstation.api.world import router as world_router
-from usvstation.services.boat import BoatError
+from usvstation.services.errors import (
+    Conflict,
+    LinkUnavailable,
+    NoAnswer,
+    NotFound,
+    QueueFull,
+    StationError,
+)
 from usvstation.station import Station
+
+RETRY_AFTER_S = 5  # what a 429 asks the client to wait
+# The HTTP status of each domain error the services raise (the first kind that matches).
+HTTP_STATUS: tuple[tuple[type[StationError], int], ...] = (
+    (NotFound, 404), (Conflict, 409), (QueueFull, 429), (LinkUnavailable, 503),
+    (NoAnswer, 504), (StationError, 409),
+)
 
 
 def create_app(station: Station) -> FastAPI:
@@ -55,10 +69,12 @@ def create_app(station: Station) -> FastAPI:
         max_ws_clients=settings.max_ws_clients,
         ws_clients=lambda: len(station.hub.subscribers)))
 
-    @app.exception_handler(BoatError)
-    async def boat_refused(_: Request, exc: BoatError) -> JSONResponse:
-        """A request the boat service refuses: its status (404, 409, 503, 504) and reason."""
-        return JSONResponse({"detail": str(exc)}, status_code=exc.status)
+    @app.exception_handler(StationError)
+    async def refused(_: Request, exc: StationError) -> JSONResponse:
+        """A request a service refuses: the status of its kind (HTTP_STATUS) and the reason."""
+        status = next(code for kind, code in HTTP_STATUS if isinstance(exc, kind))
+        headers = {"Retry-After": str(RETRY_AFTER_S)} if status == 429 else None
+        return JSONResponse({"detail": str(exc)}, status_code=status, headers=headers)
 
     for router in (health.router, scenario_routes.router, plans.router, missions.router,
                    telemetry.router, live.router, world_router, alerts_router, charts_router):

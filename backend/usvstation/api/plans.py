@@ -2,10 +2,7 @@
 
 from __future__ import annotations
 
-from fastapi import (
-    APIRouter,
-    HTTPException,
-)
+from fastapi import APIRouter
 
 from usvstation.api.deps import Auth, Read, StationDep, found
 from usvstation.api.models import (
@@ -15,13 +12,8 @@ from usvstation.api.models import (
     PlanSummary,
 )
 from usvstation.services.plans import (
-    PlanNotCancellable,
-    PlanQueueFull,
     scenario_from_boat,
 )
-
-PLAN_RETRY_AFTER_S = 5
-
 
 router = APIRouter()
 
@@ -32,17 +24,10 @@ async def post_plan(station: StationDep, req: PlanRequest | None = None) -> Acce
     req = req or PlanRequest()
     scenario = req.scenario or await station.working_scenario()
     if req.from_boat:
-        try:
-            handler = station.boat.handler
-            scenario = scenario_from_boat(scenario, handler and handler.telemetry,
-                                          handler and handler.run_t0)
-        except ValueError as exc:
-            raise HTTPException(409, detail=str(exc)) from None
-    try:
-        job = await station.plans.submit(scenario, req.planner, req.seed)
-    except PlanQueueFull as exc:
-        raise HTTPException(429, detail=str(exc),
-                            headers={"Retry-After": str(PLAN_RETRY_AFTER_S)}) from None
+        handler = station.boat.handler
+        scenario = scenario_from_boat(scenario, handler and handler.telemetry,
+                                      handler and handler.run_t0)
+    job = await station.plans.submit(scenario, req.planner, req.seed)
     return Accepted(id=job["id"], status=job["status"])
 
 
@@ -56,10 +41,7 @@ async def list_plans(station: StationDep) -> list[PlanSummary]:
                        409: {"description": "the plan already ended"}})
 async def cancel_plan(station: StationDep, plan_id: str) -> PlanSummary:
     """Cancel a queued or running plan: it ends `cancelled`, its worker is replaced."""
-    try:
-        job = await station.plans.cancel(plan_id)
-    except PlanNotCancellable as exc:
-        raise HTTPException(409, detail=str(exc)) from None
+    job = await station.plans.cancel(plan_id)
     return station.plans.summary(found(job, f"plan {plan_id!r}"))
 
 

@@ -238,7 +238,10 @@ class CommandOutcome:
         return self.result == mav.MAV_RESULT_ACCEPTED
 
 
-Event = Any
+LinkEvent = (LinkUp | LinkDown | BoatReport | TelemetryReceived | BoatRebooted
+             | StatusTextReceived | UploadProgress | UploadResult | ReadbackResult
+             | CommandOutcome)
+"""Everything the station protocol reports, and BoatLink hands its listeners."""
 
 
 # ----------------------------------------------------------------------------- timing
@@ -299,7 +302,7 @@ class LinkMonitor:
             self.next_heartbeat += ((now - self.next_heartbeat) // period + 1) * period
         return True
 
-    def on_boat_frame(self, msg: Any, now: float) -> list[Event]:
+    def on_boat_frame(self, msg: Any, now: float) -> list[LinkEvent]:
         self.last_rx = now
         if self.link_up:
             return []
@@ -308,14 +311,14 @@ class LinkMonitor:
             return [LinkUp(self.cfg.boat_id)]
         return []
 
-    def poll(self, now: float) -> list[Event]:
+    def poll(self, now: float) -> list[LinkEvent]:
         if self.link_up and now - self.last_rx > self.cfg.link_timeout_s:
             self.link_up = False
             return [LinkDown(f"no frame from boat {self.cfg.boat_id} for "
                              f"{self.cfg.link_timeout_s:.1f} s")]
         return []
 
-    def lost(self, reason: str) -> list[Event]:
+    def lost(self, reason: str) -> list[LinkEvent]:
         if not self.link_up:
             return []
         self.link_up = False
@@ -412,7 +415,7 @@ class MissionUploader:
         if t > -INF:
             self.rtt.sample(now - t)
 
-    def handle(self, ack: Any, now: float) -> tuple[list[tuple[str, Any]], list[Event]]:
+    def handle(self, ack: Any, now: float) -> tuple[list[tuple[str, Any]], list[LinkEvent]]:
         """A USV_MISSION_ACK from the boat (already known to be for this mission)."""
         if self.done:
             return [], []
@@ -456,7 +459,7 @@ class MissionUploader:
             return [], [self.result]
         return [], []
 
-    def _refused(self, what: str, ack: Any, now: float) -> tuple[list, list[Event]]:
+    def _refused(self, what: str, ack: Any, now: float) -> tuple[list, list[LinkEvent]]:
         name = wire.MISSION_RESULTS.get(ack.result, f"result {ack.result}")
         self._finish(False, f"boat refused {what}: {name}", now)
         return [], [self.result]
@@ -465,7 +468,7 @@ class MissionUploader:
         sent = sum(1 for k in self.attempts if k >= 0)
         return UploadProgress(self.mission.mission_id, self.base, self.mission.count, sent)
 
-    def poll(self, now: float) -> tuple[list[tuple[str, Any]], list[Event]]:
+    def poll(self, now: float) -> tuple[list[tuple[str, Any]], list[LinkEvent]]:
         if self.done:
             return [], []
         out: list[tuple[str, Any]] = []
@@ -476,7 +479,7 @@ class MissionUploader:
                     return [], [self.result]
         return out, []
 
-    def fail(self, reason: str, now: float) -> list[Event]:
+    def fail(self, reason: str, now: float) -> list[LinkEvent]:
         if self.done:
             return []
         self._finish(False, reason, now)
@@ -524,7 +527,7 @@ class Readback:
     def start(self, now: float) -> list[int]:
         return self._fill(now)
 
-    def on_item(self, it: MissionItem, now: float) -> tuple[list[int], list[Event]]:
+    def on_item(self, it: MissionItem, now: float) -> tuple[list[int], list[LinkEvent]]:
         if self.result is not None or not 0 <= it.seq < self.count:
             return [], []
         self.items[it.seq] = it
@@ -535,7 +538,7 @@ class Readback:
             return [], [self.result]
         return self._fill(now), []
 
-    def on_refusal(self, ack: Any) -> list[Event]:
+    def on_refusal(self, ack: Any) -> list[LinkEvent]:
         if self.result is not None:
             return []
         name = wire.MISSION_RESULTS.get(ack.result, str(ack.result))
@@ -543,7 +546,7 @@ class Readback:
         self.deadlines.clear()
         return [self.result]
 
-    def poll(self, now: float) -> tuple[list[int], list[Event]]:
+    def poll(self, now: float) -> tuple[list[int], list[LinkEvent]]:
         if self.result is not None:
             return [], []
         out: list[int] = []
@@ -590,7 +593,7 @@ class CommandSender:
                                      now + self.rtt.timeout, 1)
         return seq
 
-    def handle(self, ack: Any) -> list[Event]:
+    def handle(self, ack: Any) -> list[LinkEvent]:
         p = self.pending.get(ack.result_param2)
         if p is None or p.code != ack.command:
             return []  # not the answer to a command of this session
@@ -601,7 +604,7 @@ class CommandSender:
             wire.COMMAND_REASONS.get(ack.progress, str(ack.progress))
         return [CommandOutcome(ack.result_param2, p.name, ack.result, reason)]
 
-    def due(self, now: float) -> tuple[list[int], list[Event]]:
+    def due(self, now: float) -> tuple[list[int], list[LinkEvent]]:
         resend, events = [], []
         for seq, p in list(self.pending.items()):
             if p.deadline > now:
@@ -616,7 +619,7 @@ class CommandSender:
                 resend.append(seq)
         return resend, events
 
-    def fail_all(self, reason: str) -> list[Event]:
+    def fail_all(self, reason: str) -> list[LinkEvent]:
         events = [CommandOutcome(seq, p.name, None, error=reason)
                   for seq, p in self.pending.items()]
         self.pending.clear()
@@ -712,17 +715,17 @@ class StationProtocol:
         return None
 
     # ---- input
-    def receive_data(self, data: bytes, now: float) -> list[Event]:
+    def receive_data(self, data: bytes, now: float) -> list[LinkEvent]:
         self.bytes_received += len(data)
         msgs, refused = self.codec.feed(data)
         for r in refused:
             self.refused[r.reason] += 1
-        events: list[Event] = []
+        events: list[LinkEvent] = []
         for msg in msgs:
             events += self._handle(msg, now)
         return events + self.poll(now)
 
-    def _handle(self, msg: Any, now: float) -> list[Event]:
+    def _handle(self, msg: Any, now: float) -> list[LinkEvent]:
         kind = msg.get_type()
         if kind == "RADIO_STATUS":
             self.radio = msg  # the radio's own report (its own system id)
@@ -775,7 +778,7 @@ class StationProtocol:
                 self._sync.append((sent + rtt / 2, msg.tc1 / 1e9))
         return events
 
-    def _mission_ack(self, ack: Any, now: float) -> list[Event]:
+    def _mission_ack(self, ack: Any, now: float) -> list[LinkEvent]:
         up, rb = self.upload, self.readback
         if ack.stage == STAGE_READ:
             if rb is not None and ack.mission_id == rb.mission_id:
@@ -824,7 +827,7 @@ class StationProtocol:
                 return rep
         return self._reports[0] if self._reports else self.report
 
-    def poll(self, now: float) -> list[Event]:
+    def poll(self, now: float) -> list[LinkEvent]:
         self.now = now
         events = self.monitor.poll(now)
         if events:  # link lost: pending work cannot complete
@@ -855,7 +858,7 @@ class StationProtocol:
             self._send_command(seq, now)
         return events + ev
 
-    def _fail_pending(self, reason: str, now: float) -> list[Event]:
+    def _fail_pending(self, reason: str, now: float) -> list[LinkEvent]:
         events = self.commands.fail_all(reason)
         if self.upload is not None:
             events += self.upload.fail(f"{reason} (during the upload)", now)
@@ -864,7 +867,7 @@ class StationProtocol:
             events.append(self.readback.result)
         return events
 
-    def connection_lost(self, reason: str, now: float) -> list[Event]:
+    def connection_lost(self, reason: str, now: float) -> list[LinkEvent]:
         """The transport closed (port gone): the link is down at once."""
         return self.monitor.lost(reason) + self._fail_pending(f"link lost: {reason}", now)
 

@@ -16,15 +16,15 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
-import time
 from collections.abc import AsyncIterator, Awaitable, Callable
-from typing import Any
 
+from usvstation.clock import REAL_CLOCK, Clock
 from usvstation.link.mission import Mission
 from usvstation.link.protocol import (
     CommandOutcome,
     LinkConfig,
     LinkDown,
+    LinkEvent,
     LinkUp,
     MissionState,
     ReadbackResult,
@@ -49,28 +49,29 @@ class BoatLink:
     def __init__(self, url: str | None = None, *, baud: int = 57600,
                  stream_factory: StreamFactory | None = None,
                  config: LinkConfig | None = None, reconnect_s: float = 1.0,
-                 key: bytes | None = None, session: int | None = None) -> None:
+                 key: bytes | None = None, session: int | None = None,
+                 clock: Clock = REAL_CLOCK) -> None:
         if url is None and stream_factory is None:
             raise ValueError("BoatLink needs a url or a stream_factory")
         self.url = url
+        self.clock = clock
         self._factory = stream_factory or (lambda: open_stream(url, baud))
         self.protocol = StationProtocol(config or LinkConfig(baud=baud), self._now(), key=key,
-                                        unix_time=time.time(), session=session)
+                                        unix_time=clock.unix(), session=session)
         self.reconnect_s = reconnect_s
         self.stream: ByteStream | None = None
         self._task: asyncio.Task | None = None
         self._write_lock = asyncio.Lock()
-        self._subscribers: list[asyncio.Queue] = []
-        self._callbacks: list[Callable[[Any], None]] = []
+        self._subscribers: list[asyncio.Queue[LinkEvent]] = []
+        self._callbacks: list[Callable[[LinkEvent], None]] = []
         self._uploads: dict[int, tuple[asyncio.Future, Callable | None]] = {}
         self._commands: dict[int, asyncio.Future] = {}
         self._readbacks: dict[int, asyncio.Future] = {}
         self._link_event = asyncio.Event()
         self.last_error = ""
 
-    @staticmethod
-    def _now() -> float:
-        return time.monotonic()
+    def _now(self) -> float:
+        return self.clock.now()
 
     # ---- lifecycle
     async def start(self) -> None:
@@ -121,14 +122,14 @@ class BoatLink:
         return self.link_up
 
     # ---- events
-    def events(self, maxsize: int = 1000) -> AsyncIterator[Any]:
+    def events(self, maxsize: int = 1000) -> AsyncIterator[LinkEvent]:
         """Every event (TelemetryReceived, BoatReport, BoatRebooted, LinkUp, LinkDown,
         StatusTextReceived, UploadProgress, UploadResult, ReadbackResult, CommandOutcome).
         A slow consumer loses its oldest events, never blocks the link."""
-        queue: asyncio.Queue = asyncio.Queue(maxsize)
+        queue: asyncio.Queue[LinkEvent] = asyncio.Queue(maxsize)
         self._subscribers.append(queue)
 
-        async def gen() -> AsyncIterator[Any]:
+        async def gen() -> AsyncIterator[LinkEvent]:
             try:
                 while True:
                     yield await queue.get()
@@ -142,11 +143,11 @@ class BoatLink:
             if isinstance(ev, TelemetryReceived):
                 yield ev.telemetry
 
-    def add_listener(self, callback: Callable[[Any], None]) -> None:
+    def add_listener(self, callback: Callable[[LinkEvent], None]) -> None:
         """Call `callback(event)` on the event loop for every event."""
         self._callbacks.append(callback)
 
-    def _dispatch(self, events: list[Any]) -> None:
+    def _dispatch(self, events: list[LinkEvent]) -> None:
         for ev in events:
             if isinstance(ev, LinkUp):
                 self._link_event.set()
@@ -242,7 +243,7 @@ class BoatLink:
                 self.stream = await self._factory()
             except (OSError, ConnectionError) as exc:
                 self.last_error = f"cannot open {self.url}: {exc}"
-                await asyncio.sleep(self.reconnect_s)
+                await self.clock.sleep(self.reconnect_s)
                 continue
             reader = asyncio.get_running_loop().create_task(self._read_loop(self.stream))
             try:
@@ -252,7 +253,7 @@ class BoatLink:
                 with contextlib.suppress(asyncio.CancelledError, Exception):
                     await reader
             await self._close_stream("port closed")
-            await asyncio.sleep(self.reconnect_s)
+            await self.clock.sleep(self.reconnect_s)
 
     async def _read_loop(self, stream: ByteStream) -> None:
         while True:
@@ -271,5 +272,5 @@ class BoatLink:
             self._dispatch(self.protocol.poll(self._now()))
             await self._flush()
             # requests flush their own bytes at once; this loop only serves timers
-            await asyncio.sleep(min(max(self.protocol.next_deadline() - self._now(), 0.001),
+            await self.clock.sleep(min(max(self.protocol.next_deadline() - self._now(), 0.001),
                                     0.02))

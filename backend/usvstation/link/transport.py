@@ -1,5 +1,6 @@
 """Byte transports for usv-link: serial ports and pyserial URLs (pyserial-asyncio), a
-pseudo-terminal pair, and a fault-injecting, line-rate-pacing wrapper.
+pseudo-terminal pair, an in-memory pipe (simulated time) and a fault-injecting,
+line-rate-pacing wrapper.
 
 All of them are `ByteStream`s: `await read()` returns the next bytes (b"" once closed),
 `await write(data)` queues bytes, `await close()`.
@@ -15,6 +16,7 @@ from typing import Protocol
 
 import numpy as np
 
+from usvstation.clock import REAL_CLOCK, Clock
 from usvstation.link.wire import split_frames
 
 
@@ -154,6 +156,44 @@ class FdStream:
                 os.close(self.fd)
 
 
+class PipeEnd:
+    """One end of a `MemoryPipe`."""
+
+    def __init__(self, rx: asyncio.Queue[bytes], tx: asyncio.Queue[bytes]) -> None:
+        self._rx, self._tx = rx, tx
+        self.closed = False
+
+    async def read(self) -> bytes:
+        if self.closed:
+            return b""
+        return await self._rx.get()
+
+    async def write(self, data: bytes) -> None:
+        if self.closed:
+            raise ConnectionError("closed")
+        if data:
+            self._tx.put_nowait(bytes(data))
+
+    async def close(self) -> None:
+        if not self.closed:
+            self.closed = True
+            self._rx.put_nowait(b"")  # wakes our own reader
+            self._tx.put_nowait(b"")  # the far end reads end-of-stream
+
+
+class MemoryPipe:
+    """Two ByteStreams joined back to back in memory: what the station writes on `station`
+    the boat reads on `boat`, and back. Nothing waits on a file descriptor, so both sides
+    run on a virtual-time loop (clock.py); wrap an end in FaultInjectingStream for airtime,
+    loss and radio silence."""
+
+    def __init__(self) -> None:
+        to_boat: asyncio.Queue[bytes] = asyncio.Queue()
+        to_station: asyncio.Queue[bytes] = asyncio.Queue()
+        self.station = PipeEnd(to_station, to_boat)
+        self.boat = PipeEnd(to_boat, to_station)
+
+
 class FaultInjectingStream:
     """Wraps a ByteStream's writes like a radio link: drops whole MAVLink 2 frames with
     probability `loss`, flips each bit with probability `ber`, and paces the bytes at `baud`
@@ -163,10 +203,10 @@ class FaultInjectingStream:
     frames_sent, frames_dropped, bits_flipped, bytes_on_wire."""
 
     def __init__(self, inner: ByteStream, *, loss: float = 0.0, ber: float = 0.0,
-                 baud: int | None = None, seed: int = 0) -> None:
+                 baud: int | None = None, seed: int = 0, clock: Clock = REAL_CLOCK) -> None:
         if not 0 <= loss <= 1 or not 0 <= ber < 1:
             raise ValueError(f"loss must be in [0, 1] and ber in [0, 1), got {loss}, {ber}")
-        self.inner = inner
+        self.inner, self.clock = inner, clock
         self.loss, self.ber, self.baud = loss, ber, baud
         self.enabled = True
         self.rng = np.random.default_rng(seed)
@@ -197,18 +237,17 @@ class FaultInjectingStream:
             self._queue.put_nowait(bytes(out))
 
     async def _send_paced(self) -> None:
-        loop = asyncio.get_running_loop()
         chunk = 16
         while True:
             data = await self._queue.get()
             for i in range(0, len(data), chunk):
                 piece = data[i : i + chunk]
                 if self.baud:
-                    now = loop.time()
+                    now = self.clock.now()
                     start = max(now, self._line_free_at)
                     self._line_free_at = start + len(piece) * 10 / self.baud
                     if start > now:
-                        await asyncio.sleep(start - now)
+                        await self.clock.sleep(start - now)
                 try:
                     await self.inner.write(piece)
                 except ConnectionError:

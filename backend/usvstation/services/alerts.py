@@ -9,7 +9,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from usvstation.link.protocol import LinkDown, LinkUp
+from usvstation.link.protocol import LinkDown, LinkEvent, LinkUp
 from usvstation.world.monitor import AlertEvent
 
 
@@ -20,7 +20,7 @@ class LinkAlerts:
         self.raise_alert = raise_alert
         self.link_lost = False
 
-    def on_link_event(self, ev: object) -> None:
+    def on_link_event(self, ev: LinkEvent) -> None:
         if isinstance(ev, LinkDown):
             if not self.link_lost:
                 self.link_lost = True

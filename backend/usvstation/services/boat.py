@@ -7,7 +7,7 @@ Safety rules kept here (the boat keeps its own, protocol/README.md):
 - START names the mission and is sent with its id and CRC-32 only when the boat reports
   holding exactly that mission, READY;
 - every command needs an authenticated operator (api/) and ends with the boat's answer,
-  503 (link down) or 504 (no answer after the bounded retries);
+  LinkUnavailable (link down) or NoAnswer (no answer after the bounded retries);
 - the station never commands the boat on its own: not on errors, not on shutdown (the
   boat's link-loss failsafe takes over).
 """
@@ -16,10 +16,10 @@ from __future__ import annotations
 
 import asyncio
 import secrets
-import time
 import uuid
 from collections.abc import Awaitable, Callable, Coroutine
 
+from usvstation.clock import REAL_CLOCK, Clock
 from usvstation.config import Settings, resolve_link_key
 from usvstation.geo import RampFrame
 from usvstation.link import wire
@@ -37,6 +37,14 @@ from usvstation.records import (
 )
 from usvstation.scenario import Scenario
 from usvstation.services.boat_link import LinkHandler
+from usvstation.services.errors import (
+    BoatRefused,
+    Conflict,
+    LinkUnavailable,
+    MissionMismatch,
+    NoAnswer,
+    NotFound,
+)
 from usvstation.services.hub import LiveHub
 from usvstation.services.missions import MissionRecord, MissionStatus
 from usvstation.services.plans import PlanService
@@ -47,20 +55,13 @@ PROGRESS_EVERY_S = 0.1  # at most this often per upload on the websocket
 StreamFactory = Callable[[], Awaitable[ByteStream]]
 
 
-class BoatError(Exception):
-    """A request the boat service refuses; `status` is the HTTP status to answer."""
-
-    def __init__(self, status: int, message: str) -> None:
-        super().__init__(message)
-        self.status = status
-
-
 class BoatService:
     """Missions, commands and runs; the link and the simulated boat are its parts."""
 
     def __init__(self, settings: Settings, store: Store, hub: LiveHub, plans: PlanService, *,
-                 stream_factory: StreamFactory | None = None) -> None:
+                 stream_factory: StreamFactory | None = None, clock: Clock = REAL_CLOCK) -> None:
         self.settings, self.store, self.hub, self.plans = settings, store, hub, plans
+        self.clock = clock
         self.key = resolve_link_key(settings)
         self._stream_factory = stream_factory  # tests: an injected link
         self.simulated = False  # the embedded simulated boat is on the far end
@@ -74,9 +75,11 @@ class BoatService:
 
     # --- lifecycle -------------------------------------------------------------------------
     async def start(self, scenario: Scenario, device: str | None = None,
-                    simulated: bool = False) -> None:
-        """Open the link on `device` (default: --link) and recover the missions; with
-        `simulated` the far end is the embedded simulated boat (station.py starts it)."""
+                    simulated: bool = False,
+                    stream_factory: StreamFactory | None = None) -> None:
+        """Open the link on `device` (default: --link; or the streams `stream_factory` makes)
+        and recover the missions; with `simulated` the far end is the embedded simulated
+        boat (station.py starts it)."""
         rows = await asyncio.to_thread(recover_missions, self.store)
         self.missions = {k: MissionRecord.from_row(v) for k, v in rows.items()}
         await asyncio.to_thread(self.store.close_stale_runs)
@@ -85,10 +88,12 @@ class BoatService:
                 rec.run = None  # its run closed as interrupted; the boat's report reopens one
         self.device, self.simulated = device or self.device, simulated
         device, baud = self.device, self.settings.baud
-        factory = self._stream_factory or (lambda: open_stream(device, baud))
+        factory = (stream_factory or self._stream_factory
+                   or (lambda: open_stream(device, baud)))
         config = LinkConfig(boat_id=self.settings.boat_id, station_id=self.settings.station_id,
                             baud=baud, link_timeout_s=self.settings.heartbeat_timeout_s)
-        link = BoatLink(device, baud=baud, stream_factory=factory, config=config, key=self.key)
+        link = BoatLink(device, baud=baud, stream_factory=factory, config=config, key=self.key,
+                        clock=self.clock)
         self.handler = LinkHandler(link, device, self.store, self.hub,
                                    self._on_report, self._on_reboot)
         self.runs.handler = self.handler
@@ -114,7 +119,7 @@ class BoatService:
 
     def _require_link(self) -> BoatLink:
         if self.handler is None or not self.handler.link_up:
-            raise BoatError(503, "the boat link is down")
+            raise LinkUnavailable("the boat link is down")
         return self.handler.link
 
     # --- state for the API -----------------------------------------------------------------
@@ -143,20 +148,20 @@ class BoatService:
         boat uptime, by default the earliest instant the upload surely makes."""
         job = self.plans.get(plan_id)
         if job is None:
-            raise BoatError(404, f"no plan {plan_id!r}")
+            raise NotFound(f"no plan {plan_id!r}")
         if job["status"] != "done":
-            raise BoatError(409, f"plan {plan_id} is {job['status']}, not done")
+            raise Conflict(f"plan {plan_id} is {job['status']}, not done")
         origin = job["scenario"].get("origin")
         if origin is None:
-            raise BoatError(409, f"plan {plan_id}: its scenario has no origin, so its waypoints "
+            raise Conflict(f"plan {plan_id}: its scenario has no origin, so its waypoints "
                                  "cannot be placed on the map")
         if self.uploading is not None:
-            raise BoatError(409, f"mission {self.uploading.id} is uploading: one upload at a "
+            raise Conflict(f"mission {self.uploading.id} is uploading: one upload at a "
                                  "time")
         link = self._require_link()
         report = link.report
         if report is not None and report.state in ("HOLD", "FAILSAFE"):
-            raise BoatError(409, f"the boat is {report.state}: RESUME or ABORT first")
+            raise Conflict(f"the boat is {report.state}: RESUME or ABORT first")
         running = report is not None and report.state == "RUNNING"
         if not running:
             swap_at_ms = 0
@@ -167,8 +172,8 @@ class BoatService:
         try:
             mission = mission_from_plan(job["plan"]["waypoints"], frame, wire_id)
         except MissionError as exc:
-            raise BoatError(409, f"plan {plan_id} cannot be sent: {exc}") from None
-        rec = MissionRecord(uuid.uuid4().hex[:12], plan_id, wire_id, utc_now(), origin,
+            raise Conflict(f"plan {plan_id} cannot be sent: {exc}") from None
+        rec = MissionRecord(uuid.uuid4().hex[:12], plan_id, wire_id, utc_now(self.clock), origin,
                             [it.as_dict() for it in mission.items])
         self.missions[rec.id] = rec
         self.uploading = rec
@@ -183,12 +188,12 @@ class BoatService:
         report = self._require_link().report
         if report is None or report.state != "RUNNING":
             state = report.state if report is not None else "not reporting"
-            raise BoatError(409, f"a hot swap needs a RUNNING boat; it is {state}")
+            raise Conflict(f"a hot swap needs a RUNNING boat; it is {state}")
         rec = self.missions[(await self.create_mission(plan_id, swap_at_ms))["id"]]
         while self.uploading is rec:
-            await asyncio.sleep(0.02)
+            await self.clock.sleep(0.02)
         if rec.state in (MissionStatus.FAILED, MissionStatus.GONE):
-            raise BoatError(409, f"hot swap of plan {plan_id} failed: {rec.error or rec.state}")
+            raise Conflict(f"hot swap of plan {plan_id} failed: {rec.error or rec.state}")
         return rec.public()
 
     def _swap_instant(self, link: BoatLink) -> int:
@@ -196,7 +201,7 @@ class BoatService:
         and at least 5 s from now (TIMESYNC-aligned)."""
         up = link.boat_uptime_ms()
         if up is None:
-            raise BoatError(503, "the boat's clock is not known yet (no TIMESYNC)")
+            raise LinkUnavailable("the boat's clock is not known yet (no TIMESYNC)")
         return up + 5000 + int(3 * 256 * 100 * 10 * 1000 / self.settings.baud)
 
     async def _upload(self, rec: MissionRecord, mission: Mission, swap_at_ms: int) -> None:
@@ -205,7 +210,7 @@ class BoatService:
 
         def progress(ev: UploadProgress) -> None:
             rec.sent, rec.acked = ev.sent, ev.acked
-            now = time.monotonic()
+            now = self.clock.now()
             if now - self._last_progress.get(rec.id, 0.0) >= PROGRESS_EVERY_S \
                     or ev.acked == ev.count:
                 self._last_progress[rec.id] = now
@@ -233,16 +238,16 @@ class BoatService:
         """Read the boat's copy back and compare it item by item with what was sent."""
         rec = self.missions.get(mission_id)
         if rec is None:
-            raise BoatError(404, f"no mission {mission_id!r}")
+            raise NotFound(f"no mission {mission_id!r}")
         link = self._require_link()
         try:
             result = await link.read_mission(rec.wire_id, rec.total)
         except LinkError as exc:
-            raise BoatError(409, str(exc)) from None
+            raise Conflict(str(exc)) from None
         if result.items is None:
             if "refused" in result.error:
-                raise BoatError(409, f"mission {mission_id}: {result.error}")
-            raise BoatError(504, f"mission {mission_id}: {result.error}")
+                raise Conflict(f"mission {mission_id}: {result.error}")
+            raise NoAnswer(f"mission {mission_id}: {result.error}")
         sent = [MissionItem(**it) for it in rec.items]
         diffs: list[ItemDifference] = [{"seq": i, "sent": a.as_dict(), "boat": b.as_dict()}
                  for i, (a, b) in enumerate(zip(sent, result.items, strict=True)) if a != b]
@@ -257,36 +262,36 @@ class BoatService:
         if name == "start":
             if mission_id is None:
                 if not any(r.state == MissionStatus.VERIFIED for r in self.missions.values()):
-                    raise BoatError(409, "no verified mission to start: upload a plan first")
-                raise BoatError(409, "START names its mission: send mission_id")
+                    raise Conflict("no verified mission to start: upload a plan first")
+                raise Conflict("START names its mission: send mission_id")
             rec = self.missions.get(mission_id)
             if rec is None:
-                raise BoatError(404, f"no mission {mission_id!r}")
+                raise NotFound(f"no mission {mission_id!r}")
             report = link.report
             if report is None or report.active_id == 0:
-                raise BoatError(409, "the boat holds no mission: upload one first")
+                raise MissionMismatch("the boat holds no mission: upload one first")
             if (report.active_id, report.active_crc32) != (rec.wire_id, rec.crc):
-                raise BoatError(409, f"the boat holds another mission (wire id "
+                raise MissionMismatch(f"the boat holds another mission (wire id "
                                      f"{report.active_id}), not {mission_id}")
             wire_id, crc = rec.wire_id, rec.crc or 0
         try:
             outcome = await link.command(name, wire_id, crc)
         except LinkError as exc:
-            raise BoatError(503, str(exc)) from None
+            raise LinkUnavailable(str(exc)) from None
         if outcome.result is None:
-            raise BoatError(504, f"the boat did not acknowledge {name.upper()}: {outcome.error}")
+            raise NoAnswer(f"the boat did not acknowledge {name.upper()}: {outcome.error}")
         acked_at = link.protocol.now
         for _ in range(50):  # the boat reports its new state right after the ACK
             if link.protocol.report_at >= acked_at:
                 break
-            await asyncio.sleep(0.01)
+            await self.clock.sleep(0.01)
         report = link.report
         answer: CommandAnswer = {"command": name, "result": _result_name(outcome.result),
                   "reason": outcome.reason or None,
                   "state": report.state if report is not None else None,
                   "mission": rec.id if rec else None}
         if not outcome.accepted:
-            raise BoatError(409, f"the boat refused {name.upper()}: "
+            raise BoatRefused(f"the boat refused {name.upper()}: "
                                  f"{outcome.reason or answer['result']}")
         return answer
 

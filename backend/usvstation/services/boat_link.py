@@ -3,9 +3,7 @@ telemetry, status texts and live events, and the link's part of /api/boat."""
 
 from __future__ import annotations
 
-import time
 from collections.abc import Callable
-from typing import Any
 
 from usvstation.geo import RampFrame
 from usvstation.geometry import MS
@@ -13,6 +11,7 @@ from usvstation.link.protocol import (
     BoatRebooted,
     BoatReport,
     LinkDown,
+    LinkEvent,
     LinkUp,
     StatusTextReceived,
     Telemetry,
@@ -34,6 +33,7 @@ class LinkHandler:
                  on_report: Callable[[BoatReport], None],
                  on_reboot: Callable[[BoatRebooted], None]) -> None:
         self.link, self.device, self.store, self.hub = link, device, store, hub
+        self.clock = link.clock
         self.on_report, self.on_reboot = on_report, on_reboot
         self.frame: RampFrame | None = None  # ramp frame for x, y of telemetry
         # the moving ramp's frame of now (WorldService.current_frame), when there is one
@@ -52,7 +52,7 @@ class LinkHandler:
         return self.link.link_up
 
     def snapshot(self) -> BoatSnapshot:
-        now = time.monotonic()
+        now = self.clock.now()
         p = self.link.protocol
         rep = p.report
         return {
@@ -85,11 +85,11 @@ class LinkHandler:
             "status": self.status[-10:],
         }
 
-    def _on_event(self, ev: Any) -> None:
+    def _on_event(self, ev: LinkEvent) -> None:
         if isinstance(ev, TelemetryReceived):
             self._ingest(ev.telemetry)
         elif isinstance(ev, BoatReport):
-            self.report_at = time.monotonic()
+            self.report_at = self.clock.now()
             self.on_report(ev)
         elif isinstance(ev, BoatRebooted):
             self.on_reboot(ev)
@@ -100,30 +100,32 @@ class LinkHandler:
         elif isinstance(ev, StatusTextReceived):
             sev = SEVERITIES[ev.severity] if 0 <= ev.severity < len(SEVERITIES) \
                 else str(ev.severity)
-            item: StatusText = {"time": utc_now(), "severity": sev, "text": ev.text}
+            item: StatusText = {"time": utc_now(self.clock), "severity": sev, "text": ev.text}
             self.status = [*self.status[-(STATUS_KEPT - 1):], item]
             self.hub.publish("status", item)
 
     def _ingest(self, t: Telemetry) -> None:
         self.frames += 1
         moving = self.moving_frame() if self.moving_frame is not None else None
-        row = telemetry_row(t, moving or self.frame, self.run)
+        row = telemetry_row(t, moving or self.frame, self.run, utc_now(self.clock))
         self.store.writer.put(row)
-        self.telemetry, self.telemetry_at = row, time.monotonic()
+        self.telemetry, self.telemetry_at = row, self.clock.now()
         if self.run is not None and self.run_t0 is None:
             self.run_t0 = row["boat_time"]
         self.hub.publish("telemetry", row)
 
 
-def telemetry_row(t: Telemetry, frame: RampFrame | None, run: int | None) -> TelemetryRow:
-    """A position report as a stored row: SI units, compass degrees, ramp-frame x, y."""
+def telemetry_row(t: Telemetry, frame: RampFrame | None, run: int | None,
+                  received: str) -> TelemetryRow:
+    """A position report as a stored row (received at UTC `received`): SI units, compass
+    degrees, ramp-frame x, y."""
     x = y = ramp_heading = None
     if frame is not None:
         xs, ys = frame.to_ramp(t.lat, t.lon)
         x, y = round(float(xs), 3), round(float(ys), 3)
         ramp_heading = round(float(frame.compass_to_heading_deg(t.heading_deg)), 2)
     return {
-        "run": run, "time": utc_now(), "boat_time": t.time_s, "lat": t.lat, "lon": t.lon,
+        "run": run, "time": received, "boat_time": t.time_s, "lat": t.lat, "lon": t.lon,
         "x": x, "y": y, "heading_deg": t.heading_deg, "course_deg": t.course_deg,
         "speed": t.speed, "ramp_heading_deg": ramp_heading,
         "yaw_rate_dps": t.yaw_rate_dps, "fix_type": t.fix_type,

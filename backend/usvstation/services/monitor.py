@@ -16,13 +16,13 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import logging
-import time
 import uuid
-from collections.abc import Callable, Coroutine
+from collections.abc import Coroutine
 from typing import cast
 
 import numpy as np
 
+from usvstation.clock import REAL_CLOCK, Clock
 from usvstation.geometry import MS
 from usvstation.planning.model import Plan
 from usvstation.records import (
@@ -34,7 +34,8 @@ from usvstation.records import (
     TelemetryRow,
 )
 from usvstation.scenario import Scenario, parse_scenario
-from usvstation.services.boat import BoatError, BoatService
+from usvstation.services.boat import BoatService
+from usvstation.services.errors import Conflict, NotFound, StationError
 from usvstation.services.hub import LiveHub, Payload
 from usvstation.services.plans import PlanService
 from usvstation.services.world import WorldService
@@ -84,7 +85,7 @@ class MonitorService:
 
     def __init__(self, hub: LiveHub, alerts: AlertStore, world: WorldService,
                  boat: BoatService, plans: PlanService, policy: Policy,
-                 clock: Callable[[], float] = time.monotonic) -> None:
+                 clock: Clock = REAL_CLOCK) -> None:
         self.hub, self.alerts, self.world, self.boat, self.plans = hub, alerts, world, boat, plans
         self.clock = clock
         self.replan = ReplanService(self, policy)
@@ -138,10 +139,10 @@ class MonitorService:
         if not job or not job["plan"]:
             return
         self.use_plan(job, run)
-        pose = self.world.world.ramp(self.world.clock())
+        pose = self.world.world.ramp(self.world.clock.now())
         if pose is not None and self.scenario is not None:
             self.world.world.set_manual(
-                self.world.clock(), [(o.x, o.y, o.radius, o.vx, o.vy)
+                self.world.clock.now(), [(o.x, o.y, o.radius, o.vx, o.vy)
                                      for o in self.scenario.obstacles], pose.frame)
 
     def use_plan(self, job: PlanJob, run: int | None) -> None:
@@ -170,7 +171,7 @@ class MonitorService:
             if row.get("state") != "RUNNING":
                 return
             self.t0 = float(row["boat_time"])
-        now = self.world.clock()
+        now = self.world.clock.now()
         if now - self._assessed_at < ASSESS_MIN_INTERVAL_S:
             return  # a sped-up simulation: the event loop is not spent on every frame
         pose = self.world.world.ramp(now)
@@ -211,9 +212,10 @@ class MonitorService:
             self.hub.publish("monitor", self.last)
 
     def raise_alert(self, event: AlertEvent) -> Alert:
-        record: Alert = {"id": uuid.uuid4().hex[:12], "time": utc_now(), "level": event.level,
-                  "kind": event.kind, "message": event.message, "target_id": event.target_id,
-                  "run_id": self.run, "acknowledged": False}
+        record: Alert = {
+            "id": uuid.uuid4().hex[:12], "time": utc_now(self.clock), "level": event.level,
+            "kind": event.kind, "message": event.message, "target_id": event.target_id,
+            "run_id": self.run, "acknowledged": False}
         self.spawn(asyncio.to_thread(self.alerts.add, record))
         self.hub.publish("alert", record)
         return record
@@ -246,15 +248,16 @@ class ReplanService:
     def on_warning(self, alert: Alert, a: Assessment, targets: list[TargetState],
                    boat: BoatState, frame_velocity: tuple[float, float]) -> None:
         m = self.monitor
-        now = m.clock()
+        now = m.clock.now()
         action = decide(self.policy, alert["level"], alert["kind"], self.state, now)
         if action == "none" or m.scenario is None:
             return
         self.state = ReplanState(in_flight=True, last_t=now)
-        record: Replan = {"id": uuid.uuid4().hex[:12], "created_at": utc_now(), "run_id": m.run,
-                  "alert_id": alert["id"], "plan_id": None, "policy": self.policy,
-                  "state": "planning", "error": None, "latency_ms": None, "mission_id": None,
-                  "dropped_targets": []}
+        record: Replan = {
+            "id": uuid.uuid4().hex[:12], "created_at": utc_now(m.clock), "run_id": m.run,
+            "alert_id": alert["id"], "plan_id": None, "policy": self.policy,
+            "state": "planning", "error": None, "latency_ms": None, "mission_id": None,
+            "dropped_targets": []}
         self.replans[record["id"]] = record
         self._t_event[record["id"]] = now
         scenario = self._problem(record, a, targets, boat, frame_velocity)
@@ -296,7 +299,7 @@ class ReplanService:
                                            if scenario.planner else None)
                 record["plan_id"] = job["id"]
                 while job["status"] in ("queued", "running"):
-                    await asyncio.sleep(0.02)
+                    await m.clock.sleep(0.02)
                 if job["status"] != "done":
                     record.update(state="failed", error=job["error"])
                     return
@@ -327,27 +330,27 @@ class ReplanService:
         """The re-plan awaiting the operator; 404 or 409 otherwise."""
         record = self.replans.get(replan_id)
         if record is None:
-            raise BoatError(404, f"no re-plan {replan_id!r}")
+            raise NotFound(f"no re-plan {replan_id!r}")
         if record["state"] != "proposed":
-            raise BoatError(409, f"re-plan {replan_id} is {record['state']}, not proposed")
+            raise Conflict(f"re-plan {replan_id} is {record['state']}, not proposed")
         return record
 
     async def confirm(self, replan_id: str) -> Replan:
         record = self._proposed(replan_id)
         if self.monitor.last_inputs is None or self.monitor.scenario is None:
-            raise BoatError(409, f"re-plan {replan_id}: no running mission to re-plan")
+            raise Conflict(f"re-plan {replan_id}: no running mission to re-plan")
         # the proposal was a preview: plan the same problem afresh from the latest frame,
         # so the swap instant lies ahead of the boat, and swap that plan
         self.state = ReplanState(in_flight=True, last_t=self.state.last_t)
-        self._t_event[replan_id] = self.monitor.clock()
+        self._t_event[replan_id] = self.monitor.clock.now()
         record["proposed_plan_id"] = record["plan_id"]
         scenario = self._problem(record, *self.monitor.last_inputs)
         if scenario is None:
             self.state = ReplanState(last_t=self.state.last_t)
-            raise BoatError(409, f"re-plan {replan_id}: {record['error']}")
+            raise Conflict(f"re-plan {replan_id}: {record['error']}")
         await self._plan(record, scenario, apply=True)
         if record["state"] != "applied":
-            raise BoatError(409, f"re-plan {replan_id}: {record['error']}")
+            raise Conflict(f"re-plan {replan_id}: {record['error']}")
         return record
 
     async def reject(self, replan_id: str) -> Replan:
@@ -373,11 +376,11 @@ class ReplanService:
             return
         try:
             mission = await swap(record["plan_id"], record["swap_at_ms"])
-        except BoatError as exc:
+        except StationError as exc:
             record.update(state="failed", error=str(exc))
             return
         record.update(state="applied", mission_id=mission["id"], error=None,
-                      latency_ms=round((m.clock() - self._t_event[record["id"]]) * 1000, 1))
+                      latency_ms=round((m.clock.now() - self._t_event[record["id"]]) * 1000, 1))
         job = m.plans.get(record["plan_id"])
         if job is not None:
             m.use_plan(job, m.run)

@@ -1,5 +1,10 @@
 """Plan jobs: the IGA runs in worker processes so the event loop never blocks.
 
+With `workers=0` the plans run inline on the event loop instead, one at a time: that is for
+simulated time (a sea trial, an in-process test), where the virtual clock stands still while
+the planner computes, so a plan takes no simulated time and the outcome does not depend on
+the machine's speed.
+
 Each of the `workers` slots owns one worker process and a pipe to it. A job
 that overruns `timeout_s`, is cancelled (`DELETE /api/plans/{id}`) or whose
 worker dies (killed, out of memory) ends `failed` or `cancelled` with the
@@ -24,12 +29,12 @@ import resource
 import signal
 import sys
 import threading
-import time
 import uuid
 from dataclasses import dataclass
 from multiprocessing.connection import Connection
 from multiprocessing.process import BaseProcess
 
+from usvstation.clock import REAL_CLOCK, Clock
 from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.planning.limits import PlanTooLarge
 from usvstation.records import (
@@ -42,6 +47,7 @@ from usvstation.records import (
 )
 from usvstation.runtime import tune_allocator
 from usvstation.scenario import Scenario, scenario_at
+from usvstation.services.errors import Conflict, QueueFull
 from usvstation.services.hub import LiveHub
 from usvstation.store.db import Store, utc_now
 
@@ -54,11 +60,11 @@ PR_SET_PDEATHSIG = 1
 WATCHDOG_S = 1.0
 
 
-class PlanQueueFull(Exception):
+class PlanQueueFull(QueueFull):
     """More than `queue_max` jobs waiting or running."""
 
 
-class PlanNotCancellable(Exception):
+class PlanNotCancellable(Conflict):
     """The job already ended."""
 
 
@@ -91,8 +97,8 @@ def die_with_parent(station_pid: int) -> None:
         os._exit(0)
 
     def watch() -> None:
-        while True:
-            time.sleep(WATCHDOG_S)
+        never = threading.Event()
+        while not never.wait(WATCHDOG_S):  # a blocking wait in this worker's own thread
             try:
                 os.kill(station_pid, 0)
             except ProcessLookupError:
@@ -110,10 +116,10 @@ def scenario_from_boat(scenario: Scenario, row: TelemetryRow | None,
 
     Position and hull heading in the ramp frame, speed over ground as the start speed; moving
     obstacles are propagated to the boat's time since its run began at boat time `run_t0`
-    (0 outside a run). Raises ValueError (one line) when there is no usable telemetry.
+    (0 outside a run). Raises Conflict (one line) when there is no usable telemetry.
     """
     if not row or row.get("x") is None or row.get("ramp_heading_deg") is None:
-        raise ValueError("from_boat: no telemetry with a ramp-frame position yet "
+        raise Conflict("from_boat: no telemetry with a ramp-frame position yet "
                          "(is the boat connected and the scenario's origin set?)")
     t = row["boat_time"] - run_t0 if row.get("run") is not None and run_t0 is not None else 0.0
     return scenario_at(scenario, row["x"], row["y"], row["ramp_heading_deg"], row["speed"],
@@ -187,8 +193,8 @@ class PlanService:
     """Queues plan jobs, runs at most `workers` at once, stores every job and its result."""
 
     def __init__(self, store: Store, hub: LiveHub, workers: int = 2, *, timeout_s: float = 10.0,
-                 memory_mb: int = 2048, queue_max: int = 32) -> None:
-        self.store, self.hub, self.workers = store, hub, workers
+                 memory_mb: int = 2048, queue_max: int = 32, clock: Clock = REAL_CLOCK) -> None:
+        self.store, self.hub, self.workers, self.clock = store, hub, workers, clock
         self.timeout_s, self.memory_mb, self.queue_max = timeout_s, memory_mb, queue_max
         self.jobs: dict[str, PlanJob] = {}
         self.started = False
@@ -209,6 +215,8 @@ class PlanService:
         await asyncio.gather(*(self._ensure_worker(i) for i in range(self.workers)))
         self._runners = [asyncio.create_task(self._slot(i), name=f"plan-slot-{i}")
                          for i in range(self.workers)]
+        if self.workers == 0:
+            self._runners.append(asyncio.create_task(self._inline(), name="plan-inline"))
         self.started = True
 
     async def stop(self) -> None:
@@ -232,7 +240,7 @@ class PlanService:
             raise PlanQueueFull(f"{active} plans already queued or running (--plan-queue "
                                 f"{self.queue_max}); try again later")
         job: PlanJob = {
-            "id": uuid.uuid4().hex[:12], "created_at": utc_now(), "status": "queued",
+            "id": uuid.uuid4().hex[:12], "created_at": utc_now(self.clock), "status": "queued",
             "planner": planner, "seed": seed, "scenario": scenario.model_dump(mode="json"),
             "plan": None, "error": None,
         }
@@ -348,6 +356,24 @@ class PlanService:
                     job.update(status="failed", error=f"station error: {type(exc).__name__}: "
                                                       f"{exc}")
                     await self._save(job)
+
+    async def _inline(self) -> None:
+        """workers=0: each job planned on the loop itself (simulated time)."""
+        while True:
+            job = self.jobs.get(await self._queue.get())
+            if job is None or job["status"] != "queued":
+                continue
+            job["status"] = "running"
+            await self._save(job)
+            try:
+                plan = plan_in_worker(job["scenario"], job["planner"], job["seed"])
+            except (NoFeasiblePlan, PlanTooLarge) as exc:
+                job.update(status="failed", error=str(exc))
+            except Exception as exc:  # as in a worker: a planner bug fails the job only
+                job.update(status="failed", error=f"planner error: {type(exc).__name__}: {exc}")
+            else:
+                job.update(status="done", plan=plan, seed=plan["seed"])
+            await self._save(job)
 
     async def _run(self, i: int, job: PlanJob) -> None:
         try:

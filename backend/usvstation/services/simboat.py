@@ -1,17 +1,32 @@
-"""The simulated boat's lifetime inside `usv-station serve`: a thread with its own event
-loop serving BoatProtocol on the master side of a pty; the station opens the slave."""
+"""The simulated boat's lifetime inside the station.
+
+`EmbeddedSim` (`usv-station serve`): a thread with its own event loop, on the wall clock,
+serving BoatProtocol on the master side of a pty; the station opens the slave.
+`InProcessSim` (simulated time): the same boat on the station's own loop and clock, over an
+in-memory pipe behind a radio model (FaultInjectingStream: airtime at the link's baud, loss,
+silence)."""
 
 from __future__ import annotations
 
 import asyncio
 import contextlib
 import threading
+from collections.abc import Callable
 from dataclasses import dataclass
 
+from usvstation.clock import REAL_CLOCK, Clock
 from usvstation.config import Settings
 from usvstation.geo import RampFrame
-from usvstation.link.transport import PtyPair
+from usvstation.link.transport import (
+    ByteStream,
+    FaultInjectingStream,
+    MemoryPipe,
+    PtyPair,
+)
 from usvstation.scenario import Scenario
+from usvstation.sim.boat import BoatConfig, BoatProtocol
+from usvstation.sim.runner import SimulatedBoat, make_boat, make_vehicle
+from usvstation.sim.vehicle import Vehicle
 
 
 @dataclass
@@ -46,18 +61,59 @@ class EmbeddedSim:
         asyncio.run(self._main())
 
     async def _main(self) -> None:
-        from usvstation.sim.boat import BoatConfig
-        from usvstation.sim.runner import SimulatedBoat, make_boat, make_vehicle
-
         self._loop, self._stop = asyncio.get_running_loop(), asyncio.Event()
-        o = self.scenario.origin
-        frame = RampFrame(o.lat, o.lon, o.ramp_bearing_deg)
-        s = self.settings
-        config = BoatConfig(boat_id=s.boat_id, station_id=s.station_id,
-                            telemetry_hz=s.telemetry_hz, failsafe_timeout_s=s.heartbeat_timeout_s,
-                            sim_speed=s.sim_speed, baud=s.baud)
-        boat = make_boat(frame, config=config, key=self.key, gnss_error=s.sim_gnss_error,
-                         vehicle=make_vehicle("dynamic", self.scenario),
-                         x=self.scenario.start.x, y=self.scenario.start.y)
+        boat = build_boat(self.scenario, self.settings, self.key, REAL_CLOCK)
         self._ready.set()
         await SimulatedBoat(boat).run(self.pair.master_stream(), self._stop)
+
+
+def build_boat(scenario: Scenario, settings: Settings, key: bytes | None, clock: Clock,
+               vehicle: Vehicle | None = None) -> BoatProtocol:
+    """The simulated boat of the station's settings at the scenario's start, on `clock`;
+    `vehicle` default: the dynamic Otter of sim/runner.py `make_vehicle`."""
+    o = scenario.origin
+    assert o is not None, "the station gives the working scenario an origin first"
+    frame = RampFrame(o.lat, o.lon, o.ramp_bearing_deg)
+    s = settings
+    config = BoatConfig(boat_id=s.boat_id, station_id=s.station_id,
+                        telemetry_hz=s.telemetry_hz, failsafe_timeout_s=s.heartbeat_timeout_s,
+                        sim_speed=s.sim_speed, baud=s.baud)
+    return make_boat(frame, config=config, key=key, gnss_error=s.sim_gnss_error,
+                     vehicle=vehicle or make_vehicle("dynamic", scenario),
+                     x=scenario.start.x, y=scenario.start.y, clock=clock)
+
+
+class InProcessSim:
+    """The simulated boat on the station's loop and clock (simulated time), joined to the
+    station by a MemoryPipe; `radio` is the boat's transmitter (turn it off with
+    `radio.enabled = False` for a link-loss burst), `uplink` the station's."""
+
+    def __init__(self, scenario: Scenario, settings: Settings, key: bytes | None, clock: Clock,
+                 vehicle: Callable[[Scenario], Vehicle] | None = None) -> None:
+        self.clock = clock
+        self.boat = build_boat(scenario, settings, key, clock,
+                               vehicle(scenario) if vehicle is not None else None)
+        self.pipe = MemoryPipe()
+        self._stop = asyncio.Event()
+        self._task: asyncio.Task | None = None
+        self.radio: FaultInjectingStream | None = None
+        self.uplink: FaultInjectingStream | None = None
+        self._baud = settings.baud
+
+    def start(self) -> None:
+        self.radio = FaultInjectingStream(self.pipe.boat, baud=self._baud, clock=self.clock)
+        self.uplink = FaultInjectingStream(self.pipe.station, baud=self._baud, clock=self.clock)
+        self._task = asyncio.get_running_loop().create_task(
+            SimulatedBoat(self.boat, clock=self.clock).run(self.radio, self._stop),
+            name="simulated-boat")
+
+    async def station_stream(self) -> ByteStream:
+        """The station's end of the pipe (BoatLink's stream factory)."""
+        assert self.uplink is not None, "start() first"
+        return self.uplink
+
+    async def stop(self) -> None:
+        self._stop.set()
+        if self._task is not None:
+            with contextlib.suppress(asyncio.CancelledError, Exception):
+                await self._task

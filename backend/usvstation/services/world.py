@@ -17,10 +17,10 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import logging
-import time
 from collections.abc import Callable
 from typing import Any
 
+from usvstation.clock import REAL_CLOCK, Clock
 from usvstation.geo import RampFrame
 from usvstation.link.protocol import RampPoseSample
 from usvstation.records import InputSource, Target, WorldSnapshot
@@ -29,7 +29,7 @@ from usvstation.scenario.ships import LeverArm
 from usvstation.services.hub import LiveHub
 from usvstation.shipinputs.decode import SentenceDecoder, apply_reports
 from usvstation.shipinputs.readers import Source, open_udp, parse_source, run_stream_source
-from usvstation.sim.sea import SimulatedSea
+from usvstation.sim.sea import SimulatedSea, UdpSender
 from usvstation.store.db import utc_now
 from usvstation.world.model import World, enu_to_compass
 
@@ -52,13 +52,18 @@ def _rounded(target: Target) -> Target:
 
 
 class WorldService:
-    """Owns the world model and the ship-input sources."""
+    """Owns the world model and the ship-input sources. With `simulate`, a working scenario
+    with a mother ship or traffic starts the simulated sea: its sentences come over UDP
+    (`sea_over_udp`, the ship's network in `serve`) or straight to `feed` (simulated time,
+    where nothing waits on a socket)."""
 
     def __init__(self, hub: LiveHub, sources: list[str], *, simulate: bool = False,
-                 sim_speed: float = 1.0, clock: Callable[[], float] = time.monotonic) -> None:
+                 sim_speed: float = 1.0, clock: Clock = REAL_CLOCK,
+                 sea_over_udp: bool = True) -> None:
         self.hub, self.clock = hub, clock
-        self.simulate, self.sim_speed = simulate, sim_speed
+        self.simulate, self.sim_speed, self.sea_over_udp = simulate, sim_speed, sea_over_udp
         self.sea: SimulatedSea | None = None
+        self._sea_sender: UdpSender | None = None
         self._sea_stop: asyncio.Event | None = None
         self._sea_port: int | None = None
         self.sources: list[Source] = [parse_source(url) for url in sources]
@@ -89,18 +94,26 @@ class WorldService:
         self.set_scenario(scenario)
         if self.simulate and scenario.origin is not None and (scenario.mother_ship is not None
                                                               or scenario.traffic):
-            if self._sea_port is None:
-                self._sea_port = await self.add_source(Source("udp", "127.0.0.1", 0))
-            assert self._sea_port is not None
-            self.sea = SimulatedSea(scenario, ("127.0.0.1", self._sea_port),
-                                    sim_speed=self.sim_speed)
+            self.sea = SimulatedSea(scenario, await self._sea_send(), sim_speed=self.sim_speed,
+                                    clock=self.clock)
             self._sea_stop = asyncio.Event()
             self._spawn(self.sea.run(self._sea_stop))
+
+    async def _sea_send(self) -> Callable[[bytes], None]:
+        """Where the simulated sea's sentences go: a UDP source of ours, or `feed`."""
+        if not self.sea_over_udp:
+            return self.feed
+        if self._sea_port is None:
+            self._sea_port = await self.add_source(Source("udp", "127.0.0.1", 0))
+            assert self._sea_port is not None
+            self._sea_sender = UdpSender(("127.0.0.1", self._sea_port))
+        assert self._sea_sender is not None
+        return self._sea_sender
 
     async def _stop_sea(self) -> None:
         if self._sea_stop is not None:
             self._sea_stop.set()
-            await asyncio.sleep(0)
+            await self.clock.sleep(0)
         self.sea, self._sea_stop = None, None
 
     async def add_source(self, source: Source) -> int | None:
@@ -116,11 +129,13 @@ class WorldService:
             self.source_state[key] = {"url": key, "state": text, "port": source.port or None}
 
         state("opening")
-        self._spawn(run_stream_source(source, self.feed, state))
+        self._spawn(run_stream_source(source, self.feed, state, self.clock))
         return None
 
     async def stop(self) -> None:
         await self._stop_sea()
+        if self._sea_sender is not None:
+            self._sea_sender.close()
         for transport in self._transports:
             transport.close()
         for task in list(self._tasks):
@@ -144,18 +159,18 @@ class WorldService:
         o = scenario.origin
         frame = RampFrame(o.lat, o.lon, o.ramp_bearing_deg)
         self.world.anchor = frame
-        self.world.set_manual(self.clock(), [(ob.x, ob.y, ob.radius, ob.vx, ob.vy)
+        self.world.set_manual(self.clock.now(), [(ob.x, ob.y, ob.radius, ob.vx, ob.vy)
                                              for ob in scenario.obstacles], frame)
 
     def feed(self, line: bytes) -> None:
         """One sentence from any source."""
-        t = self.clock()
+        t = self.clock.now()
         apply_reports(self.world, t, self.decoder.feed(line, t))
 
     async def _ticker(self) -> None:
         while True:
-            await asyncio.sleep(1.0 / PUBLISH_HZ)
-            t = self.clock()
+            await self.clock.sleep(1.0 / PUBLISH_HZ)
+            t = self.clock.now()
             self.world.expire(t)
             if self.world.version != self._published:
                 self._published = self.world.version
@@ -168,8 +183,8 @@ class WorldService:
 
     async def _pose_ticker(self) -> None:
         while True:
-            await asyncio.sleep(1.0 / RAMP_POSE_HZ)
-            sample = self.ramp_sample(self.clock())
+            await self.clock.sleep(1.0 / RAMP_POSE_HZ)
+            sample = self.ramp_sample(self.clock.now())
             for listener in self.pose_listeners:
                 try:
                     listener(sample)
@@ -197,12 +212,12 @@ class WorldService:
 
     def current_frame(self) -> RampFrame | None:
         """The ramp frame of now when the ramp comes from the own ship, else None."""
-        pose = self.world.ramp(self.clock())
+        pose = self.world.ramp(self.clock.now())
         return pose.frame if pose is not None and pose.moving else None
 
     def snapshot(self, t: float | None = None) -> WorldSnapshot:
         """The `GET /api/world` body, everything predicted to station time t (default now)."""
-        t = self.clock() if t is None else t
+        t = self.clock.now() if t is None else t
         own = self.world.own
         own_out = None
         if own.has_fix:
@@ -221,7 +236,8 @@ class WorldService:
                         "source": "own_ship" if pose.moving else "origin"}
         targets = [_rounded(v) for v in self.world.targets(t)]
         s = self.decoder.stats
-        return {"time": utc_now(), "own_ship": own_out, "ramp": ramp_out, "targets": targets,
+        return {"time": utc_now(self.clock), "own_ship": own_out, "ramp": ramp_out,
+                "targets": targets,
                 "stats": {"sentences": s.sentences, "bad": s.bad, "ignored": s.ignored,
                           "bad_reasons": dict(s.reasons),
                           "sources": list(self.source_state.values())}}

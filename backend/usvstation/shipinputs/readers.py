@@ -15,6 +15,8 @@ from dataclasses import dataclass
 from typing import Literal
 from urllib.parse import parse_qs, urlsplit
 
+from usvstation.clock import REAL_CLOCK, Clock
+
 log = logging.getLogger(__name__)
 
 NMEA_BAUD = 4800  # NMEA 0183; AIS transponders use 38400: serial:///dev/ttyUSB0?baud=38400
@@ -99,7 +101,8 @@ async def open_udp(source: Source, on_line: Callable[[bytes], None]
 
 
 async def run_stream_source(source: Source, on_line: Callable[[bytes], None],
-                            on_state: Callable[[str], None] = lambda _: None) -> None:
+                            on_state: Callable[[str], None] = lambda _: None,
+                            clock: Clock = REAL_CLOCK) -> None:
     """Read a TCP or serial source until cancelled, reopening it when it fails."""
     while True:
         lines = _Lines(on_line)
@@ -123,4 +126,4 @@ async def run_stream_source(source: Source, on_line: Callable[[bytes], None],
         except (OSError, ConnectionError) as exc:
             on_state(f"error: {exc}")
             log.warning("nmea %s: %s", source, exc)
-        await asyncio.sleep(RETRY_S)
+        await clock.sleep(RETRY_S)

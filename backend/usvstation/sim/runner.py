@@ -7,11 +7,11 @@ import contextlib
 import json
 import math
 import os
-import time
 from collections.abc import Awaitable, Callable
 from dataclasses import dataclass
 from pathlib import Path
 
+from usvstation.clock import REAL_CLOCK, Clock
 from usvstation.geo import RampFrame
 from usvstation.link.transport import ByteStream, open_stream
 from usvstation.scenario import Scenario
@@ -51,11 +51,12 @@ def make_vehicle(kind: str, scenario: Scenario, sea_state: int = 0,
 
 @dataclass
 class SimulatedBoat:
-    """The boat protocol engine on the event loop, fed from a stream and the wall clock."""
+    """The boat protocol engine on the event loop, fed from a stream and its clock."""
 
     boat: BoatProtocol
     log: Callable[[str], None] | None = None
     nv_path: Path | None = None  # the boat's "flash": its NonVolatile, written on change
+    clock: Clock = REAL_CLOCK
 
     async def run(self, stream: ByteStream, stop: asyncio.Event | None = None) -> str:
         """Serve until the stream closes (returns why) or `stop` is set."""
@@ -64,10 +65,10 @@ class SimulatedBoat:
         reader = asyncio.get_running_loop().create_task(self._read(stream))
         try:
             while not reader.done() and not stop.is_set():
-                self.boat.update(time.monotonic())
+                self.boat.update(self.clock.now())
                 await self._flush(stream)
-                await asyncio.sleep(
-                    min(max(self.boat.next_deadline() - time.monotonic(), 0.0005), 0.02))
+                await self.clock.sleep(
+                    min(max(self.boat.next_deadline() - self.clock.now(), 0.0005), 0.02))
         finally:
             reader.cancel()
             with contextlib.suppress(asyncio.CancelledError, Exception):
@@ -82,7 +83,7 @@ class SimulatedBoat:
                 return
             if not data:
                 return
-            self.boat.receive_data(data, time.monotonic())
+            self.boat.receive_data(data, self.clock.now())
             await self._flush(stream)
 
     async def _flush(self, stream: ByteStream) -> None:
@@ -93,7 +94,7 @@ class SimulatedBoat:
             for line in self.boat.log:
                 self.log(line)
         self.boat.log.clear()
-        data = self.boat.data_to_send(time.monotonic())
+        data = self.boat.data_to_send(self.clock.now())
         if data:
             with contextlib.suppress(ConnectionError, OSError):
                 await stream.write(data)
@@ -119,32 +120,33 @@ def save_nv(path: Path, nv: NonVolatile) -> None:
 def make_boat(frame: RampFrame, *, x: float = 85.0, y: float = 10.0, heading_deg: float = 180.0,
               config: BoatConfig | None = None, seed: int = 0, key: bytes | None = None,
               vehicle: Vehicle | None = None, nv: NonVolatile | None = None,
-              gnss_error: bool = True) -> BoatProtocol:
+              gnss_error: bool = True, clock: Clock = REAL_CLOCK) -> BoatProtocol:
     """A simulated boat at ramp-frame (x, y) with a KinematicVehicle unless one is given;
-    signing with `key` (None: unsigned, --insecure-link), its clock on the wall clock;
+    signing with `key` (None: unsigned, --insecure-link), its time from `clock`;
     `gnss_error` False: its fixes report its exact position."""
     vehicle = vehicle or KinematicVehicle(x, y, math.radians(heading_deg))
     gps = GpsNoise(seed=seed) if gnss_error else GpsNoise(bias_std_m=0.0, white_std_m=0.0)
     return BoatProtocol(vehicle, frame, config or BoatConfig(), key=key, nv=nv,
-                        gps=gps, now=time.monotonic(), unix_time=time.time())
+                        gps=gps, now=clock.now(), unix_time=clock.unix())
 
 
 async def serve_on_url(boat: BoatProtocol, url: str, baud: int, *,
                        log: Callable[[str], None] = print, reconnect_s: float = 1.0,
                        stop: asyncio.Event | None = None, nv_path: Path | None = None,
-                       opener: Callable[[str, int], Awaitable[ByteStream]] = open_stream) -> None:
+                       opener: Callable[[str, int], Awaitable[ByteStream]] = open_stream,
+                       clock: Clock = REAL_CLOCK) -> None:
     """Serve on a serial device or URL, reopening it when it closes or fails to open."""
     stop = stop or asyncio.Event()
-    sim = SimulatedBoat(boat, log, nv_path)
+    sim = SimulatedBoat(boat, log, nv_path, clock)
     while not stop.is_set():
         try:
             stream = await opener(url, baud)
         except (OSError, ConnectionError) as exc:
             log(f"cannot open {url}: {exc}; retrying")
-            await asyncio.sleep(reconnect_s)
+            await clock.sleep(reconnect_s)
             continue
         reason = await sim.run(stream, stop)
         await stream.close()
         if not stop.is_set():
             log(f"{url}: {reason}; reopening")
-            await asyncio.sleep(reconnect_s)
+            await clock.sleep(reconnect_s)

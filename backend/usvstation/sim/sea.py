@@ -3,8 +3,10 @@ ship's network would (NMEA 0183 own-ship sentences and AIS/ARPA over UDP).
 
 `SeaModel` is pure: the true state of every ship at any time t (s since the sea started),
 from the scenario's `origin`, `mother_ship` and `traffic` (scenario/ships.py), and the
-sentences that report it (pynmea2 and pyais encode them). `run_sea` sends them on a real
-UDP socket at `rate_hz` (sim time, scaled by `sim_speed`) and records the truth.
+sentences that report it (pynmea2 and pyais encode them). `SimulatedSea` hands them to a
+sender at `rate_hz` of sea time (the clock's time scaled by `sim_speed`) and records the
+truth: `UdpSender` puts them on a real UDP socket (`serve`: the ship's network), while in
+simulated time they go straight to the world service.
 """
 
 from __future__ import annotations
@@ -22,6 +24,7 @@ import numpy as np
 import pynmea2
 from pyais import encode_dict
 
+from usvstation.clock import REAL_CLOCK, Clock
 from usvstation.geo import RampFrame
 from usvstation.scenario import Scenario
 from usvstation.scenario.ships import MotherShip, TrafficShip
@@ -209,43 +212,53 @@ class TruthRecord:
     ships: list[ShipTruth]
 
 
-class SimulatedSea:
-    """Sends the sea's sentences to `addr` over UDP and keeps the recent truth."""
+class UdpSender:
+    """Sends each sentence as one UDP datagram to `addr`; a full or closed socket loses it,
+    as a network would."""
 
-    def __init__(self, scenario: Scenario, addr: tuple[str, int], rate_hz: float = 2.0,
-                 sim_speed: float = 1.0, clock: Callable[[], float] = time.monotonic) -> None:
+    def __init__(self, addr: tuple[str, int]) -> None:
+        self.addr = addr
+        self.sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        self.sock.setblocking(False)
+
+    def __call__(self, data: bytes) -> None:
+        with contextlib.suppress(OSError):
+            self.sock.sendto(data, self.addr)
+
+    def close(self) -> None:
+        self.sock.close()
+
+
+class SimulatedSea:
+    """Hands the sea's sentences (CRLF-terminated bytes) to `send` and keeps the recent
+    truth."""
+
+    def __init__(self, scenario: Scenario, send: Callable[[bytes], None], rate_hz: float = 2.0,
+                 sim_speed: float = 1.0, clock: Clock = REAL_CLOCK) -> None:
         self.model = SeaModel(scenario)
-        self.addr, self.rate_hz, self.sim_speed, self.clock = addr, rate_hz, sim_speed, clock
+        self.send, self.rate_hz, self.sim_speed, self.clock = send, rate_hz, sim_speed, clock
         self.truth: deque[TruthRecord] = deque(maxlen=TRUTH_KEPT)
         self.sent = 0
         self.t0: float | None = None
 
     def now(self) -> float:
         """Sea time: seconds since the sea started, scaled by sim_speed."""
-        return 0.0 if self.t0 is None else (self.clock() - self.t0) * self.sim_speed
+        return 0.0 if self.t0 is None else (self.clock.now() - self.t0) * self.sim_speed
 
     async def run(self, stop: asyncio.Event) -> None:
-        sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
-        sock.setblocking(False)
-        self.t0 = self.clock()
+        self.t0 = self.clock.now()
         last_static = -math.inf
-        try:
-            while not stop.is_set():
-                t = self.now()
-                static = t - last_static >= STATIC_EVERY_S
-                if static:
-                    last_static = t
-                for line in self.model.sentences(t, static=static):
-                    try:
-                        sock.sendto((line + "\r\n").encode("ascii"), self.addr)
-                        self.sent += 1
-                    except OSError:
-                        pass  # a full or closed socket loses a sentence, as a network would
-                own = self.model.mother_at(t)
-                self.truth.append(TruthRecord(t, self.model.ramp_at(t),
-                                              [*([own] if own else []),
-                                               *self.model.traffic_at(t)]))
-                with contextlib.suppress(TimeoutError):
-                    await asyncio.wait_for(stop.wait(), 1.0 / (self.rate_hz * self.sim_speed))
-        finally:
-            sock.close()
+        while not stop.is_set():
+            t = self.now()
+            static = t - last_static >= STATIC_EVERY_S
+            if static:
+                last_static = t
+            for line in self.model.sentences(t, static=static):
+                self.send((line + "\r\n").encode("ascii"))
+                self.sent += 1
+            own = self.model.mother_at(t)
+            self.truth.append(TruthRecord(t, self.model.ramp_at(t),
+                                          [*([own] if own else []),
+                                           *self.model.traffic_at(t)]))
+            with contextlib.suppress(TimeoutError):
+                await asyncio.wait_for(stop.wait(), 1.0 / (self.rate_hz * self.sim_speed))

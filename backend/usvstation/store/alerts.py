@@ -71,7 +71,7 @@ class AlertStore:
     def acknowledge(self, alert_id: str) -> dict[str, Any] | None:
         with self.store.conn as c:
             c.execute("UPDATE alerts SET acknowledged = 1, acknowledged_at = ? "
-                      "WHERE id = ? AND acknowledged = 0", (utc_now(), alert_id))
+                      "WHERE id = ? AND acknowledged = 0", (utc_now(self.store.clock), alert_id))
             row = c.execute(f"SELECT {', '.join(ALERT_FIELDS)} FROM alerts WHERE id = ?",
                             (alert_id,)).fetchone()
         return _alert(row) if row else None

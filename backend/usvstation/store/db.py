@@ -14,12 +14,13 @@ import json
 import queue
 import sqlite3
 import threading
-import time
 from collections import deque
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
+
+from usvstation.clock import REAL_CLOCK, Clock, utc_iso
 
 SCHEMA = """
 CREATE TABLE IF NOT EXISTS runs (
@@ -84,10 +85,9 @@ _INSERT = (
 )
 
 
-def utc_now() -> str:
-    """ISO 8601 UTC with milliseconds, e.g. 2026-11-22T12:00:00.123Z."""
-    t = time.time()
-    return time.strftime("%Y-%m-%dT%H:%M:%S", time.gmtime(t)) + f".{int(t * 1000) % 1000:03d}Z"
+def utc_now(clock: Clock = REAL_CLOCK) -> str:
+    """The clock's time as ISO 8601 UTC with milliseconds, e.g. 2026-11-22T12:00:00.123Z."""
+    return utc_iso(clock.unix())
 
 
 def connect(path: Path, timeout: float = 30.0) -> sqlite3.Connection:
@@ -116,7 +116,8 @@ WRITER_BUSY_TIMEOUT_S = 2.0
 class TelemetryWriter:
     """Background thread that batches telemetry rows into transactions.
 
-    Any SQLite or OS error (disk full, a lock held by another process, a
+    Its batching and retry pacing are I/O concerns and run on the real clock, whatever
+    clock the station runs on. Any SQLite or OS error (disk full, a lock held by another process, a
     read-only file) is kept as `error` (health reports it) and the commit is
     retried after a growing backoff, on a fresh connection, until it
     succeeds; meanwhile rows wait in a queue of at most `queue_max` frames
@@ -158,7 +159,7 @@ class TelemetryWriter:
     def close(self, timeout: float = 5.0) -> None:
         """Commit what is queued (trying until `timeout`) and stop the thread."""
         if self._thread.is_alive():
-            self._stop_by = time.monotonic() + timeout
+            self._stop_by = REAL_CLOCK.now() + timeout
             self._queue.put(None)
             self._thread.join(timeout + 1.0)
 
@@ -176,7 +177,7 @@ class TelemetryWriter:
         stopping, failures = False, 0
         commit_at: float | None = None  # monotonic time of the next commit (or retry)
         while True:
-            now = time.monotonic()
+            now = REAL_CLOCK.now()
             wait = None if commit_at is None else max(0.0, commit_at - now)
             if stopping and self._stop_by is not None:
                 wait = max(0.0, min(wait if wait is not None else 0.0, self._stop_by - now))
@@ -195,7 +196,7 @@ class TelemetryWriter:
                     item = self._queue.get_nowait()
                 except queue.Empty:
                     item = ()
-            now = time.monotonic()
+            now = REAL_CLOCK.now()
             if not failures:
                 if stopping or waiters or len(self._pending) >= self.batch_max:
                     commit_at = now
@@ -219,12 +220,12 @@ class TelemetryWriter:
                 self.error = f"{type(exc).__name__}: {exc}"
                 self.stats.retries += 1
                 failures += 1
-                commit_at = time.monotonic() + BACKOFF_S[min(failures, len(BACKOFF_S)) - 1]
+                commit_at = REAL_CLOCK.now() + BACKOFF_S[min(failures, len(BACKOFF_S)) - 1]
                 if conn is not None:
                     with contextlib.suppress(sqlite3.Error):
                         conn.close()
                     conn = None
-                if stopping and (self._stop_by is None or time.monotonic() >= self._stop_by):
+                if stopping and (self._stop_by is None or REAL_CLOCK.now() >= self._stop_by):
                     return
                 continue
             failures, commit_at, self.error = 0, None, None
@@ -263,8 +264,9 @@ def migrate(conn: sqlite3.Connection) -> None:
 class Store:
     """The station's database: schema, writer, and read helpers (call from worker threads)."""
 
-    def __init__(self, data_dir: Path) -> None:
+    def __init__(self, data_dir: Path, clock: Clock = REAL_CLOCK) -> None:
         data_dir.mkdir(parents=True, exist_ok=True)
+        self.clock = clock  # stamps runs, missions and plans
         self.path = data_dir / "station.sqlite3"
         self._local = threading.local()
         with connect(self.path) as conn:
@@ -291,20 +293,20 @@ class Store:
         with self.conn as c:
             cur = c.execute(
                 "INSERT INTO runs (mission_id, plan_id, started_at) VALUES (?, ?, ?)",
-                (mission_id, plan_id, utc_now()),
+                (mission_id, plan_id, utc_now(self.clock)),
             )
             return int(cur.lastrowid)
 
     def close_run(self, run: int, state: str) -> None:
         with self.conn as c:
             c.execute("UPDATE runs SET ended_at = ?, state = ? WHERE id = ?",
-                      (utc_now(), state, run))
+                      (utc_now(self.clock), state, run))
 
     def close_stale_runs(self) -> None:
         """Runs left active by a previous station process end as 'interrupted'."""
         with self.conn as c:
             c.execute("UPDATE runs SET ended_at = ?, state = 'interrupted' WHERE state = 'active'",
-                      (utc_now(),))
+                      (utc_now(self.clock),))
 
     def runs(self) -> list[dict[str, Any]]:
         rows = self.conn.execute(

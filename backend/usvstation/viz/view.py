@@ -17,11 +17,11 @@ from __future__ import annotations
 import bisect
 import math
 import threading
-import time
 from typing import Any
 
 import numpy as np
 
+from usvstation.clock import REAL_CLOCK
 from usvstation.geometry import inflated_radius, position_at
 from usvstation.scenario import Scenario
 
@@ -287,7 +287,7 @@ class ThreeDView:
         """One real position at mission time t; the line is redrawn at most twice a second."""
         with self._lock:
             self._track.append((x, y, t * self.time_scale))
-            now = time.monotonic()
+            now = REAL_CLOCK.now()  # redraw pacing: a browser's frame rate, real time
             if self.server is None or len(self._track) < 2 or \
                     now - self._track_drawn_at < TRACK_REDRAW_S:
                 return
