@@ -14,6 +14,7 @@ entry points reads the wall clock or sleeps directly (a ruff rule enforces it).
   Real sockets or pipes are not watched for in simulated time: simulated parts talk over
   in-memory streams (`link.transport.MemoryPipe`).
 - `ManualClock`: a clock a test or a stepped bench advances by hand.
+- `Stopwatch`, `pause`: real time for what benchmarks measure and their load generators.
 
 `run_simulated(main)` runs a coroutine function on a fresh virtual loop, like
 `asyncio.run`.
@@ -75,6 +76,25 @@ class RealClock:
 
 
 REAL_CLOCK = RealClock()
+
+
+class Stopwatch:
+    """Elapsed wall time and this process's CPU time since it was made: for the figures
+    benchmarks and campaigns report, never for what decides an outcome."""
+
+    def __init__(self) -> None:
+        self.t0, self.c0 = time.perf_counter(), time.process_time()
+
+    def elapsed(self) -> float:
+        return time.perf_counter() - self.t0
+
+    def cpu(self) -> float:
+        return time.process_time() - self.c0
+
+
+def pause(seconds: float) -> None:
+    """Block this thread for `seconds` of real time (benchmark load generators only)."""
+    time.sleep(seconds)
 
 
 class ManualClock:

@@ -7,8 +7,9 @@ import re
 import signal
 import subprocess
 import sys
-import time
 from pathlib import Path
+
+from usvstation.clock import REAL_CLOCK, Stopwatch, pause
 
 SCRIPT = Path(sys.executable).parent / "usv-station"
 
@@ -33,19 +34,19 @@ class ServeProcess:
             raise
 
     def _wait_for(self, what: str, pattern: str, timeout: float = 60.0) -> str:
-        deadline = time.monotonic() + timeout
-        while time.monotonic() < deadline:
+        deadline = REAL_CLOCK.now() + timeout
+        while REAL_CLOCK.now() < deadline:
             found = re.search(pattern, self.log.read_text())
             if found:
                 return found.group(1)
             if self.proc.poll() is not None:
                 raise RuntimeError(f"serve exited: {self.log.read_text()[-2000:]}")
-            time.sleep(0.05)
+            pause(0.05)
         raise RuntimeError(f"no {what} URL from serve: {self.log.read_text()[-2000:]}")
 
     def stop(self, sig: int = signal.SIGTERM, timeout: float = 10.0) -> float:
         """Send `sig`; returns the seconds until the process exited (killed after `timeout`)."""
-        t0 = time.monotonic()
+        watch = Stopwatch()
         if self.proc.poll() is None:
             self.proc.send_signal(sig)
             try:
@@ -54,4 +55,4 @@ class ServeProcess:
                 self.proc.kill()
                 self.proc.wait()
         self._log.close()
-        return time.monotonic() - t0
+        return watch.elapsed()

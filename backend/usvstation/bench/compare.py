@@ -18,7 +18,6 @@ rule on head-on and give-way crossings; improved vs conventional GA).
 from __future__ import annotations
 
 import math
-import time
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -26,6 +25,7 @@ from typing import Any
 import numpy as np
 
 from usvstation.bench.render import markdown_table
+from usvstation.clock import Stopwatch
 from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.planning.registry import plan_with, planner_names
 from usvstation.scenario import Scenario, load_scenario, parse_scenario
@@ -233,15 +233,15 @@ def evaluate(scenario: Scenario, family: str, planner: str, seed: int,
              track: bool = False) -> dict[str, Any]:
     """One episode: plan, check, metrics (the plan already passed the checker); with `track`
     the simulated boat also sails the plan (`tracked_deviation`)."""
-    t0 = time.perf_counter()
+    watch = Stopwatch()
     row: dict[str, Any] = {"planner": planner, "family": family, "scenario": scenario.name,
                            "seed": seed}
     try:  # in the stable format, as the OMPL episodes' plans come (from their process)
         plan = plan_with(scenario, planner, seed).to_document()
     except NoFeasiblePlan as exc:
         return {**row, "success": False, "error": str(exc)[:300],
-                "plan_time_ms": (time.perf_counter() - t0) * 1000.0}
-    row = _row_from_plan(row, scenario, family, plan, (time.perf_counter() - t0) * 1000.0)
+                "plan_time_ms": watch.elapsed() * 1000.0}
+    row = _row_from_plan(row, scenario, family, plan, watch.elapsed() * 1000.0)
     if track:
         row.update(tracked_deviation(scenario, plan))
     return row
@@ -253,11 +253,11 @@ def evaluate_ompl(scenario: Scenario, family: str, planner: str, seed: int) -> d
 
     row: dict[str, Any] = {"planner": f"ompl:{planner}", "family": family,
                            "scenario": scenario.name, "seed": seed}
-    t0 = time.perf_counter()
+    watch = Stopwatch()
     res = run_in_process(scenario.model_dump(mode="json"), planner, seed)
     if not res["success"]:
         return {**row, "success": False, "error": res["error"][:300],
-                "plan_time_ms": (time.perf_counter() - t0) * 1000.0}
+                "plan_time_ms": watch.elapsed() * 1000.0}
     return _row_from_plan(row, scenario, family, res["plan"], res["plan_time_ms"])
 
 
@@ -451,7 +451,7 @@ def colregs_001(rows: list[dict[str, Any]], seeds: int,
         times, succ, gens, fit = [], [], [], []
         for sc in colregs_cases():
             for seed in range(1, seeds + 1):
-                t0 = time.perf_counter()
+                watch = Stopwatch()
                 try:
                     p = plan_with(sc, "colregs-ga", seed, improved=improved, attempts=1)
                 except NoFeasiblePlan:
@@ -459,7 +459,7 @@ def colregs_001(rows: list[dict[str, Any]], seeds: int,
                     continue
                 m = p.metrics
                 succ.append(True)
-                times.append((time.perf_counter() - t0) * 1000.0 / max(m["steps"], 1))
+                times.append(watch.elapsed() * 1000.0 / max(m["steps"], 1))
                 gens.append(m["generations_per_step_mean"])
                 fit.append(m["fitness_final"])
         trend[label] = {"ms_per_step": round(float(np.median(times)), 3) if times else None,

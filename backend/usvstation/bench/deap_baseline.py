@@ -12,11 +12,11 @@ times compare at equal or worse fitness.
 from __future__ import annotations
 
 import random
-import time
 from dataclasses import dataclass
 
 import numpy as np
 
+from usvstation.clock import Stopwatch
 from usvstation.planning.encoding import GeneLayout
 from usvstation.planning.fitness import Evaluator
 
@@ -66,7 +66,7 @@ def run_deap(
     toolbox.register("mutate", tools.mutFlipBit, indpb=pm)
     toolbox.register("select", tools.selTournament, tournsize=tournament_size)
 
-    t0 = time.perf_counter()
+    watch = Stopwatch()
     if initial_bits is None:
         pop = [individual(rnd.randint(0, 1) for _ in range(layout.n_bits))
                for _ in range(population)]
@@ -83,4 +83,4 @@ def run_deap(
         pop[:] = offspring
         best = max(best, max(ind.fitness.values[0] for ind in pop))
     return BaselineRun(best_fitness=best, generations=gen, evaluations=evaluations,
-                       elapsed_s=time.perf_counter() - t0, reached_target=best >= target)
+                       elapsed_s=watch.elapsed(), reached_target=best >= target)

@@ -19,10 +19,10 @@ from __future__ import annotations
 import asyncio
 import platform
 import random
-import time
 from collections.abc import Callable
 from typing import Any
 
+from usvstation.clock import REAL_CLOCK, Stopwatch
 from usvstation.geo import RampFrame
 from usvstation.link import wire
 from usvstation.link.mission import Mission, mission_from_plan
@@ -112,10 +112,10 @@ async def _upload_run(baud: int, loss: float, seed: int, bound_s: float,
                       one_way_s: float) -> dict[str, Any]:
     mission = bench_mission(mission_id=seed * 100 + int(loss * 100) + 1)
     async with _Rig(baud, loss, seed) as rig:
-        await asyncio.sleep(0.5)  # the handshake's frames and first telemetry drain
-        t0 = time.perf_counter()
+        await REAL_CLOCK.sleep(0.5)  # the handshake's frames and first telemetry drain
+        watch = Stopwatch()
         result = await rig.link.upload_mission(mission)
-        elapsed = time.perf_counter() - t0
+        elapsed = watch.elapsed()
         active = rig.boat.active
         return {
             "baud": baud, "loss": loss, "seed": seed, "time_s": round(elapsed, 4),
@@ -181,11 +181,11 @@ def decode_rate(frames: int = 100_000, repeats: int = 3) -> tuple[float, float]:
     best_cpu = best_wall = 0.0
     for _ in range(repeats):
         dec = wire.Codec(255, 190, KEY, timestamp=0)
-        c0, t0 = time.process_time(), time.perf_counter()
+        watch = Stopwatch()
         n = 0
         for i in range(0, len(data), 4096):
             n += len(dec.feed(data[i : i + 4096])[0])
-        cpu, wall = time.process_time() - c0, time.perf_counter() - t0
+        cpu, wall = watch.cpu(), watch.elapsed()
         best_cpu, best_wall = max(best_cpu, n / max(cpu, 1e-9)), max(best_wall, n / wall)
         assert n == frames
     return best_cpu, best_wall

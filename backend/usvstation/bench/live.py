@@ -28,13 +28,13 @@ time plus the upload's simulated link time).
 from __future__ import annotations
 
 import math
-import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
+from usvstation.clock import Stopwatch
 from usvstation.dynamics import Environment
 from usvstation.geo import RampFrame
 from usvstation.geometry import MS
@@ -254,7 +254,7 @@ def run_episode(scenario: Scenario, plan: dict[str, Any], traffic: Traffic, poli
                 if decide("auto", event.level, event.kind, state, tel.time_s) != "apply":
                     continue
                 state = ReplanState(last_t=tel.time_s)
-                t_event = time.perf_counter()
+                watch = Stopwatch()
                 try:
                     problem, _ = replan_scenario(scenario, a, targets, max(math.hypot(
                         bs.vx, bs.vy), 0.5), lead_s=SWAP_LEAD_S, seed=replans + 1)
@@ -262,7 +262,7 @@ def run_episode(scenario: Scenario, plan: dict[str, Any], traffic: Traffic, poli
                 except (NoFeasiblePlan, ReplanImpossible, ValueError):
                     failed += 1
                     continue
-                planning = time.perf_counter() - t_event
+                planning = watch.elapsed()
                 for _ in range(max(1, round(planning / LINK_DT))):  # sails on meanwhile
                     link.step()
                     truth()

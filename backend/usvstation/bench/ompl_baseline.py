@@ -15,8 +15,9 @@ from __future__ import annotations
 import json
 import subprocess
 import sys
-import time
 from typing import Any
+
+from usvstation.clock import Stopwatch
 
 OMPL_PLANNERS = ("RRTstar", "InformedRRTstar", "BITstar")
 
@@ -59,7 +60,7 @@ def _plan(scenario_json: dict[str, Any], planner: str, seed: int, iterations: in
     from usvstation.scenario import parse_scenario
 
     ou.RNG.setSeed(seed)
-    t0 = time.perf_counter()
+    watch = Stopwatch()
     sc = parse_scenario(scenario_json)
     world = World.from_scenario(sc)
     cruise = cruise_speed(sc)
@@ -122,11 +123,11 @@ def _plan(scenario_json: dict[str, Any], planner: str, seed: int, iterations: in
     if sc.kind == "recovery":
         pts = np.vstack([pts, [[0.0, 0.0]]])
     try:
-        plan = finish_plan(sc, pts, f"ompl:{planner}", seed, cruise, time.perf_counter() - t0)
+        plan = finish_plan(sc, pts, f"ompl:{planner}", seed, cruise, watch.elapsed())
     except NoFeasiblePlan as exc:
         return {"success": False, "error": str(exc)}
     return {"success": True, "plan": plan.to_document(),
-            "plan_time_ms": (time.perf_counter() - t0) * 1000}
+            "plan_time_ms": watch.elapsed() * 1000}
 
 
 if __name__ == "__main__":

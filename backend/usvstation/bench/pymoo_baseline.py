@@ -10,11 +10,10 @@ runs until it reaches a target fitness (the IGA's) or `max_generations`.
 
 from __future__ import annotations
 
-import time
-
 import numpy as np
 
 from usvstation.bench.deap_baseline import BaselineRun
+from usvstation.clock import Stopwatch
 from usvstation.planning.encoding import GeneLayout
 from usvstation.planning.fitness import Evaluator
 
@@ -43,7 +42,7 @@ def run_pymoo(
                    crossover=SinglePointCrossover(prob=0.9),
                    mutation=BitflipMutation(prob=1.0, prob_var=min(0.5, 1.5 / layout.n_bits)),
                    eliminate_duplicates=True)
-    t0 = time.perf_counter()
+    watch = Stopwatch()
     algorithm.setup(BitProblem(), seed=seed, verbose=False)
     best, gen = -np.inf, -1
     while gen < max_generations:
@@ -54,4 +53,4 @@ def run_pymoo(
             break
     return BaselineRun(best_fitness=best, generations=gen,
                        evaluations=int(algorithm.evaluator.n_eval),
-                       elapsed_s=time.perf_counter() - t0, reached_target=best >= target)
+                       elapsed_s=watch.elapsed(), reached_target=best >= target)

@@ -20,7 +20,6 @@ import socket
 import statistics
 import tempfile
 import threading
-import time
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -30,6 +29,7 @@ import numpy as np
 
 from usvstation.bench.planner import machine_info
 from usvstation.bench.scenarios import random_transit
+from usvstation.clock import REAL_CLOCK, Stopwatch, pause
 from usvstation.serveproc import ServeProcess
 
 TOKEN = "bench-token-0123456789abcdef"
@@ -64,17 +64,17 @@ async def websocket_latency(url: str, clients: int, seconds: float) -> dict[str,
 
     latencies: list[float] = []
     received = [0] * clients
-    stop = time.monotonic() + seconds
+    stop = REAL_CLOCK.now() + seconds
 
     async def client(i: int) -> None:
         async with connect(url.replace("http", "ws") + "/ws/live", max_size=None,
                            additional_headers={"Authorization": f"Bearer {TOKEN}"}) as ws:
-            while time.monotonic() < stop:
+            while REAL_CLOCK.now() < stop:
                 try:
                     text = await asyncio.wait_for(ws.recv(), timeout=1.0)
                 except TimeoutError:
                     continue
-                now = time.time()
+                now = REAL_CLOCK.unix()
                 if text.startswith('{"type":"telemetry"'):
                     import json
 
@@ -95,27 +95,27 @@ async def health_under_planning(url: str, plans_at_once: int, seconds: float) ->
     scenarios = [random_transit(i).model_dump(mode="json") for i in range(8)]
     latencies: list[float] = []
     running_seen: list[int] = []
-    stop = time.monotonic() + seconds
+    stop = REAL_CLOCK.now() + seconds
     async with httpx.AsyncClient(base_url=url, timeout=30, headers=headers) as c:
 
         async def planner(k: int) -> int:
             done = 0
-            while time.monotonic() < stop:
+            while REAL_CLOCK.now() < stop:
                 job = (await c.post("/api/plans", headers=headers,
                                     json={"scenario": scenarios[(k + done) % 8]})).json()
                 while (await c.get(f"/api/plans/{job['id']}")).json()["status"] in (
                         "queued", "running"):
-                    await asyncio.sleep(0.02)
+                    await REAL_CLOCK.sleep(0.02)
                 done += 1
             return done
 
         async def prober() -> None:
-            while time.monotonic() < stop:
-                t0 = time.perf_counter()
+            while REAL_CLOCK.now() < stop:
+                watch = Stopwatch()
                 r = await c.get("/api/health")
-                latencies.append(1000.0 * (time.perf_counter() - t0))
+                latencies.append(1000.0 * watch.elapsed())
                 running_seen.append(r.json()["plans"]["running"])
-                await asyncio.sleep(0.02)
+                await REAL_CLOCK.sleep(0.02)
 
         results = await asyncio.gather(prober(), *(planner(k) for k in range(plans_at_once)))
     return {"plans_at_once": plans_at_once, "seconds": seconds,
@@ -135,16 +135,16 @@ class _Prober(threading.Thread):
     def run(self) -> None:
         with httpx.Client(base_url=self.url, timeout=30) as c:
             while not self.stop.is_set():
-                t0 = time.perf_counter()
+                watch = Stopwatch()
                 try:
                     ok = c.get("/api/health").status_code == 200
                 except httpx.HTTPError:
                     ok = False
                 if ok:
-                    self.latencies.append(1000.0 * (time.perf_counter() - t0))
+                    self.latencies.append(1000.0 * watch.elapsed())
                 else:
                     self.errors += 1
-                time.sleep(0.02)
+                pause(0.02)
 
     def take(self) -> list[float]:
         out, self.latencies = self.latencies, []
@@ -157,16 +157,16 @@ def _big_body_without_token(host: str, port: int, size: int) -> tuple[int, float
             f"Content-Type: application/json\r\nContent-Length: {size}\r\n\r\n").encode()
     chunk = b"\0" * 65536
     with socket.create_connection((host, port), timeout=30) as s:
-        t0 = time.perf_counter()
+        watch = Stopwatch()
         s.sendall(head)
         s.setblocking(False)
         sent, data = 0, b""
-        while b"\r\n" not in data and time.perf_counter() - t0 < 30:
+        while b"\r\n" not in data and watch.elapsed() < 30:
             if sent < size:
                 try:
                     sent += s.send(chunk[: size - sent])
                 except BlockingIOError:
-                    time.sleep(0.001)
+                    pause(0.001)
                 except OSError:
                     sent = size
             try:
@@ -176,7 +176,7 @@ def _big_body_without_token(host: str, port: int, size: int) -> tuple[int, float
             if not piece:
                 break
             data += piece
-        elapsed = 1000.0 * (time.perf_counter() - t0)
+        elapsed = 1000.0 * watch.elapsed()
     status = int(data.split()[1]) if data.startswith(b"HTTP/") else 0
     return status, round(elapsed, 2)
 
@@ -186,7 +186,7 @@ def abuse(url: str, half_open: int, seconds: float) -> dict[str, Any]:
     port_n = int(port)
     prober = _Prober(url)
     prober.start()
-    time.sleep(1.0)
+    pause(1.0)
     prober.take()
     bodies = [_big_body_without_token(host, port_n, 50 << 20) for _ in range(5)]
     during_bodies = prober.take()
@@ -197,7 +197,7 @@ def abuse(url: str, half_open: int, seconds: float) -> dict[str, Any]:
             sock.sendall(b"GET /api/health HTTP/1.1\r\nHost: x")
         conns.append(sock)
     prober.take()
-    time.sleep(seconds)
+    pause(seconds)
     during_half_open = prober.take()
     for sock in conns:
         sock.close()
@@ -225,7 +225,7 @@ def run_server_bench(quick: bool = False,
     progress("station with telemetry at 50 Hz, 20 websocket clients")
     station = Station({"USV_STATION_TELEMETRY_HZ": "50"})
     try:
-        time.sleep(2.0)  # link up, telemetry flowing
+        pause(2.0)  # link up, telemetry flowing
         out["websocket"] = asyncio.run(websocket_latency(station.url, 20, seconds))
         out["loop_lag_worst_ms_websocket"] = httpx.get(
             station.url + "/api/health", timeout=30).json()["loop_lag_ms"]["worst_since_start"]

@@ -24,13 +24,13 @@ from __future__ import annotations
 import itertools
 import math
 import platform
-import time
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
 
+from usvstation.clock import Stopwatch
 from usvstation.control.autopilot import Autopilot
 from usvstation.control.loop import TrackingLoop
 from usvstation.control.select import make_controller
@@ -753,27 +753,28 @@ def manoeuvres() -> dict[str, Any]:
 def run_tracking_bench(progress: Callable[[str], None] | None = None,
                        with_manoeuvres: bool = False) -> dict[str, Any]:
     """Everything `usv-station bench tracking` prints."""
-    t0 = time.perf_counter()
+    watch = Stopwatch()
+    t0 = 0.0
     if progress:
         progress("paper 000 sec. 4.2 reproduction (kinematic boat)")
     paper = paper_reproduction()
-    t1 = time.perf_counter()
+    t1 = watch.elapsed()
     setup = DisturbedSetup()
     rows = disturbed(setup, progress=progress)
     quartering = DisturbedSetup(wave_dir=QUARTERING_WAVE_DIR)
     rows_quartering = disturbed(quartering, progress=progress)
     untuned = untuned_arrivals(progress=progress)
     noisy = disturbed(setup, methods=("avlos_comp",), progress=progress, sensor_seed=7)
-    t2 = time.perf_counter()
+    t2 = watch.elapsed()
     if progress:
         progress("station keeping")
     keeping = station_keeping()
     if progress:
         progress("hairpins")
     pins = hairpins()
-    t3 = time.perf_counter()
+    t3 = watch.elapsed()
     ctl = controllers(progress)
-    t4 = time.perf_counter()
+    t4 = watch.elapsed()
     waves = setup.environment().waves
     assert waves is not None
     vessel = otter()

@@ -10,13 +10,13 @@ from __future__ import annotations
 
 import json
 import os
-import time
 from collections.abc import Iterator
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from pathlib import Path
 from typing import Any
 
 from usvstation.campaign.spec import CampaignError, CampaignSpec, load_spec
+from usvstation.clock import Stopwatch
 
 __all__ = ["CampaignError", "episodes", "run_campaign", "run_episode", "write_parquet"]
 
@@ -62,14 +62,14 @@ def run_episode(ep: dict[str, Any]) -> dict[str, Any]:
                                                 "current_dir_deg": ep["current_dir_deg"]})
         sc = sc.model_copy(update={"environment": env})
     row = {k: ep[k] for k in ("key", "planner", "family", "scenario", "seed", "current")}
-    t0 = time.perf_counter()
+    watch = Stopwatch()
     try:
         plan = plan_with(sc, ep["planner"], ep["seed"], **ep["options"])
     except NoFeasiblePlan as exc:
         return {**row, "success": False, "error": str(exc)[:300], "length_m": None,
                 "normalization_index": None, "duration_s": None, "min_clearance_m": None,
                 "total_turn_deg": None, "max_turn_deg": None, "waypoints": 0,
-                "plan_time_ms": (time.perf_counter() - t0) * 1000.0, "replans": 0}
+                "plan_time_ms": watch.elapsed() * 1000.0, "replans": 0}
     pts = np.array([[w.x, w.y] for w in plan.waypoints])
     pm = path_metrics(pts)
     m = plan.metrics
@@ -77,7 +77,7 @@ def run_episode(ep: dict[str, Any]) -> dict[str, Any]:
             "normalization_index": pm["normalization_index"], "duration_s": m.duration_s,
             "min_clearance_m": m.min_clearance_m, "total_turn_deg": pm["total_turn_deg"],
             "max_turn_deg": pm["max_turn_deg"], "waypoints": len(plan.waypoints),
-            "plan_time_ms": (time.perf_counter() - t0) * 1000.0,
+            "plan_time_ms": watch.elapsed() * 1000.0,
             "replans": int(m.get("replans", 0))}
 
 
@@ -177,7 +177,7 @@ def run_campaign(spec_path: Path, out: Path, ray: str | None = None, workers: in
 
         bar = tqdm(total=len(all_eps), initial=len(all_eps) - len(todo), unit="ep",
                    desc=spec.name, dynamic_ncols=True)
-    t0 = time.perf_counter()
+    watch = Stopwatch()
     ran = 0
     with log.open("a", encoding="utf-8") as fh:
         if log.stat().st_size and not log.read_bytes().endswith(b"\n"):
@@ -192,5 +192,5 @@ def run_campaign(spec_path: Path, out: Path, ray: str | None = None, workers: in
         bar.close()
     parquet = write_parquet(out)
     return {"name": spec.name, "episodes": len(all_eps), "skipped": len(all_eps) - len(todo),
-            "ran": ran, "elapsed_s": round(time.perf_counter() - t0, 3),
+            "ran": ran, "elapsed_s": round(watch.elapsed(), 3),
             "parquet": str(parquet), "backend": f"ray:{ray}" if ray else f"pool:{workers}"}
