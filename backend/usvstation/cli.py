@@ -168,6 +168,7 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("--ompl", action="store_true",
                        help="compare: add OMPL's RRT*, Informed RRT* and BIT* (pip install ompl)")
     _add_campaign_parser(sub)
+    _add_trial_parser(sub)
     return parser
 
 
@@ -218,7 +219,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         command = {"serve": _cmd_serve, "plan": _cmd_plan, "bench": _cmd_bench,
                    "sim": _cmd_sim, "link-key": _cmd_link_key,
-                   "campaign": _cmd_campaign}.get(args.command)
+                   "campaign": _cmd_campaign, "trial": _cmd_trial}.get(args.command)
         if command is not None:
             return command(args)
     except CliError as exc:
@@ -459,6 +460,49 @@ def _cmd_campaign(args: argparse.Namespace) -> int:
     except CampaignError as exc:
         raise CliError(str(exc), EXIT_INVALID) from None
     print(json.dumps(result, indent=2) if args.json else format_report(result))
+    return EXIT_OK
+
+
+def _add_trial_parser(sub: Any) -> None:
+    trial = sub.add_parser(
+        "trial", help="sea trials: many complete recoveries in simulated time",
+        usage="usv-station trial SPEC.toml --out DIR [--ray local|ADDRESS] [--workers N]\n"
+              "       usv-station trial report DIR [--json]",
+        description=("SPEC.toml --out DIR: run (or resume) the spec's seeded episodes, each a "
+                     "whole recovery at sea (planner, signed link, simulated boat, telemetry, "
+                     "monitor, re-plan, arrival) in simulated time, on a process pool or Ray; "
+                     "one JSON line per episode in DIR/episodes.jsonl. report DIR: outcome "
+                     "counts and arrival percentiles with 95 %% intervals (docs/trials.md)."))
+    trial.add_argument("target", nargs="+", metavar="SPEC.toml | report DIR")
+    trial.add_argument("--out", type=Path, help="trial folder (with SPEC.toml)")
+    trial.add_argument("--ray", metavar="auto|local|ADDRESS",
+                       help="run on Ray: 'local' starts one here, 'auto' or an address joins one")
+    trial.add_argument("--workers", type=int, default=None, help="pool size (default CPU count)")
+    trial.add_argument("--no-progress", action="store_true", help="no progress bar")
+    trial.add_argument("--json", action="store_true", help="report: print JSON")
+
+
+def _cmd_trial(args: argparse.Namespace) -> int:
+    from usvstation.trial.report import format_report, report
+    from usvstation.trial.run import run_trial
+    from usvstation.trial.spec import TrialError
+
+    target = args.target
+    try:
+        if target[0] == "report":
+            if len(target) != 2:
+                raise CliError("report takes one folder: usv-station trial report DIR",
+                               EXIT_INVALID)
+            result = report(Path(target[1]))
+            print(json.dumps(result, indent=2) if args.json else format_report(result))
+            return EXIT_OK
+        if len(target) != 1 or args.out is None:
+            raise CliError("usage: usv-station trial SPEC.toml --out DIR", EXIT_INVALID)
+        summary = run_trial(Path(target[0]), args.out, ray=args.ray, workers=args.workers,
+                            progress=not args.no_progress)
+    except TrialError as exc:
+        raise CliError(str(exc), EXIT_INVALID) from None
+    print(json.dumps(summary, indent=2))
     return EXIT_OK
 
 

@@ -82,8 +82,9 @@ class Station:
     feeds the world directly, and the 3D view's server is not started."""
 
     def __init__(self, settings: Settings, clock: Clock = REAL_CLOCK, *,
-                 in_process: bool = False) -> None:
+                 in_process: bool = False, scenario: Scenario | None = None) -> None:
         self.settings, self.clock, self.in_process = settings, clock, in_process
+        self._initial_scenario = scenario  # becomes the working scenario at start
         self.token = resolve_token(settings)
         viewer = settings.viewer_token
         if viewer is not None and (not viewer or viewer == self.token):
@@ -120,6 +121,9 @@ class Station:
         self.lag.start()
         self.store.start()
         await self.plans.start()
+        if self._initial_scenario is not None:
+            await asyncio.to_thread(self.store.set_setting, "scenario",
+                                    self._initial_scenario.model_dump(mode="json"))
         scenario = await self.working_scenario()
         if not self.in_process:
             await asyncio.to_thread(self.view.start)

@@ -10,15 +10,18 @@ from __future__ import annotations
 
 import json
 import os
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator, Sequence
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 from usvstation.campaign.spec import CampaignError, CampaignSpec, load_spec
 from usvstation.clock import Stopwatch
 
-__all__ = ["CampaignError", "episodes", "run_campaign", "run_episode", "write_parquet"]
+__all__ = ["CampaignError", "done_keys", "episodes", "pool_results", "ray_results",
+           "run_campaign", "run_episode", "write_parquet"]
+T = TypeVar("T")
+R = TypeVar("R")
 
 
 def episodes(spec: CampaignSpec) -> list[dict[str, Any]]:
@@ -81,7 +84,7 @@ def run_episode(ep: dict[str, Any]) -> dict[str, Any]:
             "replans": int(m.get("replans", 0))}
 
 
-def _done_keys(path: Path) -> set[str]:
+def done_keys(path: Path) -> set[str]:
     keys = set()
     if path.exists():
         for line in path.read_text(encoding="utf-8").splitlines():
@@ -117,12 +120,13 @@ def write_parquet(folder: Path) -> Path:
     return out
 
 
-def _pool_results(todo: list[dict[str, Any]], workers: int) -> Iterator[dict[str, Any]]:
+def pool_results(fn: Callable[[T], R], todo: Sequence[T], workers: int) -> Iterator[R]:
+    """`fn` of every item on a pool of `workers` processes, as they finish."""
     import multiprocessing
 
     ctx = multiprocessing.get_context("forkserver")
     with ProcessPoolExecutor(workers, mp_context=ctx) as pool:
-        pending = {pool.submit(run_episode, ep) for ep in todo}
+        pending = {pool.submit(fn, ep) for ep in todo}
         try:
             while pending:
                 done, pending = wait(pending, return_when=FIRST_COMPLETED)
@@ -133,8 +137,10 @@ def _pool_results(todo: list[dict[str, Any]], workers: int) -> Iterator[dict[str
                 f.cancel()
 
 
-def _ray_results(todo: list[dict[str, Any]], address: str, workers: int | None
-                 ) -> Iterator[dict[str, Any]]:
+def ray_results(fn: Callable[[T], R], todo: Sequence[T], address: str,
+                workers: int | None) -> Iterator[R]:
+    """`fn` of every item as Ray tasks (`address` 'local': a Ray of this machine's cores),
+    as they finish."""
     try:
         import ray
     except ImportError:
@@ -148,7 +154,7 @@ def _ray_results(todo: list[dict[str, Any]], address: str, workers: int | None
             ray.init(address=None if address == "auto" else address, log_to_driver=False)
         started = True
     try:
-        remote = ray.remote(run_episode)
+        remote = ray.remote(fn)
         pending = [remote.remote(ep) for ep in todo]
         while pending:
             done, pending = ray.wait(pending, num_returns=1)
@@ -159,6 +165,30 @@ def _ray_results(todo: list[dict[str, Any]], address: str, workers: int | None
             ray.shutdown()
 
 
+def append_rows(log: Path, rows: Iterator[dict[str, Any]], *, total: int, initial: int,
+                desc: str, progress: bool) -> int:
+    """Append each row to the JSON-lines `log` as it comes (flushed: an interruption loses
+    only what is in flight), with a progress bar on stderr; the number appended."""
+    bar = None
+    if progress:
+        from tqdm import tqdm
+
+        bar = tqdm(total=total, initial=initial, unit="ep", desc=desc, dynamic_ncols=True)
+    ran = 0
+    with log.open("a", encoding="utf-8") as fh:
+        if log.stat().st_size and not log.read_bytes().endswith(b"\n"):
+            fh.write("\n")  # a line cut by an interruption stays apart (and is re-run)
+        for row in rows:
+            fh.write(json.dumps(row) + "\n")
+            fh.flush()
+            ran += 1
+            if bar is not None:
+                bar.update(1)
+    if bar is not None:
+        bar.close()
+    return ran
+
+
 def run_campaign(spec_path: Path, out: Path, ray: str | None = None, workers: int | None = None,
                  progress: bool = True) -> dict[str, Any]:
     """Run the episodes of SPEC not yet in OUT; return a summary (counts and the Parquet path)."""
@@ -167,29 +197,14 @@ def run_campaign(spec_path: Path, out: Path, ray: str | None = None, workers: in
     (out / "spec.json").write_text(spec.model_dump_json(indent=2) + "\n", encoding="utf-8")
     log = out / "episodes.jsonl"
     all_eps = episodes(spec)
-    done = _done_keys(log)
+    done = done_keys(log)
     todo = [ep for ep in all_eps if ep["key"] not in done]
     workers = workers or os.cpu_count() or 1
-    results = (_ray_results(todo, ray, workers) if ray else _pool_results(todo, workers))
-    bar = None
-    if progress:
-        from tqdm import tqdm
-
-        bar = tqdm(total=len(all_eps), initial=len(all_eps) - len(todo), unit="ep",
-                   desc=spec.name, dynamic_ncols=True)
+    results = (ray_results(run_episode, todo, ray, workers) if ray
+               else pool_results(run_episode, todo, workers))
     watch = Stopwatch()
-    ran = 0
-    with log.open("a", encoding="utf-8") as fh:
-        if log.stat().st_size and not log.read_bytes().endswith(b"\n"):
-            fh.write("\n")  # a line cut by an interruption stays apart (and is re-run)
-        for row in results:
-            fh.write(json.dumps(row) + "\n")
-            fh.flush()
-            ran += 1
-            if bar is not None:
-                bar.update(1)
-    if bar is not None:
-        bar.close()
+    ran = append_rows(log, results, total=len(all_eps), initial=len(all_eps) - len(todo),
+                      desc=spec.name, progress=progress)
     parquet = write_parquet(out)
     return {"name": spec.name, "episodes": len(all_eps), "skipped": len(all_eps) - len(todo),
             "ran": ran, "elapsed_s": round(watch.elapsed(), 3),

@@ -14,12 +14,14 @@ from __future__ import annotations
 
 import tomllib
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
 
 from usvstation.bench.compare import FAMILIES
 from usvstation.planning.registry import planner_names
+
+M = TypeVar("M", bound=BaseModel)
 
 
 class CampaignError(ValueError):
@@ -62,17 +64,23 @@ class CampaignSpec(BaseModel):
         return v
 
 
-def load_spec(path: Path) -> CampaignSpec:
+def load_toml(path: Path, model: type[M], error: type[ValueError], what: str) -> M:
+    """A TOML file read into `model` (its `name` defaults to the file's stem); `error` with one
+    line naming the field when it cannot be read or is wrong."""
     try:
         data = tomllib.loads(path.read_text(encoding="utf-8"))
     except FileNotFoundError:
-        raise CampaignError(f"{path}: no such campaign file") from None
+        raise error(f"{path}: no such {what} file") from None
     except (OSError, tomllib.TOMLDecodeError) as exc:
-        raise CampaignError(f"{path}: {exc}") from None
+        raise error(f"{path}: {exc}") from None
     data.setdefault("name", path.stem)
     try:
-        return CampaignSpec(**data)
+        return model(**data)
     except ValidationError as exc:
         err = exc.errors(include_url=False)[0]
         loc = ".".join(str(p) for p in err["loc"])
-        raise CampaignError(f"{path}: {loc}: {err['msg'].removeprefix('Value error, ')}") from None
+        raise error(f"{path}: {loc}: {err['msg'].removeprefix('Value error, ')}") from None
+
+
+def load_spec(path: Path) -> CampaignSpec:
+    return load_toml(path, CampaignSpec, CampaignError, "campaign")

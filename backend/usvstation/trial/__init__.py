@@ -1,0 +1,1 @@
+"""Sea trials: many complete recoveries at sea in simulated time (docs/trials.md)."""
