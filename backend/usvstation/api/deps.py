@@ -11,7 +11,7 @@ from usvstation.api.auth import require_operator, require_viewer
 from usvstation.station import Station
 
 
-def _station(conn: HTTPConnection) -> Station:
+async def _station(conn: HTTPConnection) -> Station:
     return conn.app.state.station
 
 
