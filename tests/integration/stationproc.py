@@ -23,7 +23,9 @@ class StationProcess(ServeProcess):
                                    headers={"Authorization": f"Bearer {token}"})
 
     def stop(self, sig: int = signal.SIGTERM, timeout: float = 10.0) -> float:
-        self.client.close()
+        client = getattr(self, "client", None)  # None when start-up failed before it was made
+        if client is not None:
+            client.close()
         return super().stop(sig, timeout)
 
     def wait_plan(self, plan_id: str, timeout: float = 30.0) -> dict:
