@@ -30,7 +30,7 @@ async def get_world_scenario(request: Request) -> WorldScenario:
     station = request.app.state.station
     base = await station.working_scenario()
     world = station.world
-    t = world.clock()
+    t = world.clock.now()
     pose = world.world.ramp(t)
     frame_v = (0.0, 0.0)
     if pose is not None:
