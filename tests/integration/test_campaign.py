@@ -1,4 +1,5 @@
-"""Campaigns: pool and Ray give the same episodes; a re-run skips finished work."""
+"""Campaigns and sea trials: pool and Ray give the same episodes; a re-run skips finished
+work. One local Ray serves the module (it takes many seconds to start)."""
 
 import json
 
@@ -53,8 +54,19 @@ def test_interrupted_campaign_resumes_without_repeating(pool_run):
     assert _rows(part) == _rows(d / "pool")
 
 
-def test_ray_local_campaign_equals_pool(tmp_path):
-    pytest.importorskip("ray")
+@pytest.fixture(scope="module")
+def local_ray():
+    """Ray on this machine, started once; the runners use it as it is (`--ray local` starts
+    one only when none runs)."""
+    ray = pytest.importorskip("ray")
+    ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False)
+    try:
+        yield ray
+    finally:
+        ray.shutdown()
+
+
+def test_ray_local_campaign_equals_pool(tmp_path, local_ray):
     spec = tmp_path / "spec.toml"
     # 20 episodes: 2 planners x 5 recoveries (4 public + 1 seeded random) x 2 seeds
     spec.write_text(SPEC.replace('families = ["traps", "recovery"]', 'families = ["recovery"]')
@@ -63,6 +75,22 @@ def test_ray_local_campaign_equals_pool(tmp_path):
     ray_run = run_campaign(spec, tmp_path / "ray", ray="local", workers=2, progress=False)
     assert pool["episodes"] == ray_run["episodes"] == ray_run["ran"] == 20
     assert _rows(tmp_path / "ray") == _rows(tmp_path / "pool")
+
+
+def test_ray_local_trial_gives_the_pool_lines(tmp_path, local_ray):
+    from usvstation.trial.run import run_trial
+
+    spec = tmp_path / "trial.toml"
+    spec.write_text('name = "tiny"\nepisodes = 2\nseed = 3\nbase = ["case2"]\n'
+                    'time_limit_s = 200\n[families]\ntraffic = ["none", "crossing"]\n'
+                    'current_speed = [0.0, 0.2]\n', encoding="utf-8")
+    run_trial(spec, tmp_path / "pool", workers=1, progress=False)
+    assert run_trial(spec, tmp_path / "ray", ray="local", workers=2, progress=False)["ran"] == 2
+
+    def lines(folder):
+        return sorted((folder / "episodes.jsonl").read_text().splitlines())
+
+    assert lines(tmp_path / "ray") == lines(tmp_path / "pool")
 
 
 def test_report_has_success_table_with_intervals(pool_run):

@@ -86,18 +86,3 @@ def test_trial_errors_are_one_line(tmp_path, capsys):
     assert main(["trial", str(bad)]) == 2  # no --out
     assert "usage: usv-station trial SPEC.toml --out DIR" in capsys.readouterr().err
 
-
-def test_ray_local_gives_the_same_lines_as_the_pool(tmp_path):
-    pytest.importorskip("ray")
-    from usvstation.trial.run import run_trial
-
-    spec = _spec(tmp_path, 2)
-    run_trial(tmp_path.joinpath("spec.toml"), tmp_path / "pool", workers=1, progress=False)
-    ray_run = run_trial(tmp_path.joinpath("spec.toml"), tmp_path / "ray", ray="local",
-                        workers=2, progress=False)
-    assert ray_run["ran"] == 2 and spec
-
-    def lines(folder):
-        return sorted((folder / "episodes.jsonl").read_text().splitlines())
-
-    assert lines(tmp_path / "ray") == lines(tmp_path / "pool")
