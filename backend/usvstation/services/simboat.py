@@ -57,7 +57,8 @@ class EmbeddedSim:
                             telemetry_hz=s.telemetry_hz, failsafe_timeout_s=s.heartbeat_timeout_s,
                             sim_speed=s.sim_speed, baud=s.baud)
         boat = make_boat(frame, config=config, key=self.key, gnss_error=s.sim_gnss_error,
-                         vehicle=make_vehicle("dynamic", self.scenario),
+                         vehicle=make_vehicle("dynamic", self.scenario, sensors="rtk"
+                                              if s.sim_gnss_error else "exact"),
                          x=self.scenario.start.x, y=self.scenario.start.y)
         self._ready.set()
         await SimulatedBoat(boat).run(self.pair.master_stream(), self._stop)
