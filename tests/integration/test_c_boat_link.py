@@ -440,3 +440,32 @@ def test_any_valid_mission_verifies_with_the_python_crc32(exe, d, key_path):
             assert nak.result == M_OUT_OF_RANGE and nak.seq == k
 
         check()
+
+
+@pytest.mark.parametrize(("sensors", "fix_type"), [("exact", 3), ("rtk", 6), ("gnss", 3)])
+def test_the_boat_reports_what_its_sensors_measure(exe, d, key_path, sensors, fix_type):
+    """The host build navigates on its sensor model (issue 23): at rest on its start point,
+    exact sensors read the start, RTK centimetres off it, plain GNSS decimetres to metres."""
+    with boat_and_station(exe, d, key_path, extra=("--sensors", sensors, "--seed", "3")) \
+            as (_, c), heartbeats(c):
+        c.wait_for(lambda m: len(c.of_type("GLOBAL_POSITION_INT")) >= 8, 20)
+        fixes = c.of_type("GLOBAL_POSITION_INT")
+        raw = c.wait_for(lambda m: m.get_type() == "GPS_RAW_INT")
+    north = [(f.lat - 599_000_000) * 0.0111 for f in fixes]  # 1e-7 deg of latitude ~ 0.0111 m
+    worst = max(abs(n) for n in north)
+    if sensors == "exact":
+        assert worst < 0.02
+    elif sensors == "rtk":
+        assert worst < 0.15
+    else:
+        assert 0.05 < worst < 6.0
+    assert raw.fix_type == fix_type
+
+
+def test_an_unknown_sensor_profile_is_refused(exe):
+    import subprocess
+
+    out = subprocess.run([str(exe), "pty", "--insecure-link", "--sensors", "dgps"],
+                         capture_output=True, text=True, timeout=30)
+    assert out.returncode == 2
+    assert "--sensors dgps: unknown profile (exact, rtk, gnss, rtk-moving-base)" in out.stderr

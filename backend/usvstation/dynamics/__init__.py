@@ -11,11 +11,19 @@ from usvstation.dynamics.environment import (
     wind_force,
 )
 from usvstation.dynamics.kinematic import KinematicBoat
-from usvstation.dynamics.params import Thrusters, VesselParams, otter, trimaran, vessel_preset
+from usvstation.dynamics.params import (
+    HullMismatch,
+    Thrusters,
+    VesselParams,
+    otter,
+    trimaran,
+    vessel_preset,
+)
 from usvstation.dynamics.vessel import ThrustCommand, Vessel, VesselState
 
 __all__ = [
     "Environment",
+    "HullMismatch",
     "KinematicBoat",
     "Push",
     "ThrustCommand",

@@ -96,6 +96,7 @@ class VesselParams:
     lateral_area_water: float  # m^2, A_Lc
     wind_coefficients: tuple[float, float, float] = (0.7, 0.8, 0.05)  # c_x, c_y, c_n
     current_coefficients: tuple[float, float, float] = (0.1, 1.0, 0.05)  # c_x, c_y, c_n
+    crossflow_scale: float = 1.0  # multiplies the strip cross-flow drag (HullMismatch)
     sources: dict[str, str] = field(default_factory=dict, compare=False)
     _cache: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
@@ -119,7 +120,7 @@ class VesselParams:
         x = -self.length / 2.0 + (np.arange(n) + 0.5) * dx
         cd = hoerner_cd(self.crossflow_beam, self.draft) if self.crossflow_beam > 0 else 0.0
         self._cache["strip_x"] = x
-        self._cache["strip_k"] = 0.5 * RHO_WATER * self.draft * cd * dx
+        self._cache["strip_k"] = 0.5 * RHO_WATER * self.draft * cd * dx * self.crossflow_scale
 
     @property
     def mass_matrix(self) -> np.ndarray:
@@ -176,6 +177,46 @@ class VesselParams:
         if q == 0.0:
             return full / d
         return (-d + math.sqrt(d * d + 4.0 * q * full)) / (2.0 * q)
+
+
+@dataclass(frozen=True)
+class HullMismatch:
+    """How the real hull differs from the model its observer and controllers were tuned on.
+
+    `drag_scale` multiplies every damping term (surge, sway and yaw, linear, quadratic and
+    the cross-flow drag: a fouled hull, 1.25 = +25 %); `thrust_scale` multiplies both
+    propellers' thrust at every shaft speed (0.85 = 15 % less: a worn or fouled
+    propeller, a weak battery). `apply` gives the true hull; the boat keeps the nominal
+    one in its controllers (sim/dynamic.py).
+    """
+
+    drag_scale: float = 1.0
+    thrust_scale: float = 1.0
+
+    def __post_init__(self) -> None:
+        for name in ("drag_scale", "thrust_scale"):
+            value = getattr(self, name)
+            if not (math.isfinite(value) and 0.2 <= value <= 5.0):
+                raise ValueError(f"hull mismatch: {name} must be within [0.2, 5] (got {value})")
+
+    @property
+    def nominal(self) -> bool:
+        return self.drag_scale == 1.0 and self.thrust_scale == 1.0
+
+    def apply(self, params: VesselParams) -> VesselParams:
+        """The true hull: `params` with its damping and thrust scaled."""
+        if self.nominal:
+            return params
+        from dataclasses import replace
+
+        d, t = self.drag_scale, self.thrust_scale
+        th = replace(params.thrusters, k_forward=params.thrusters.k_forward * t,
+                     k_reverse=params.thrusters.k_reverse * t)
+        true = replace(params, name=f"{params.name} (drag x{d:g}, thrust x{t:g})",
+                       linear_damping=tuple(x * d for x in params.linear_damping),
+                       quadratic_damping=tuple(x * d for x in params.quadratic_damping),
+                       crossflow_scale=params.crossflow_scale * d, thrusters=th)
+        return replace(true, top_speed=true.calm_water_top_speed())
 
 
 def otter() -> VesselParams:

@@ -79,7 +79,8 @@ def build_boat(scenario: Scenario, settings: Settings, key: bytes | None, clock:
                         telemetry_hz=s.telemetry_hz, failsafe_timeout_s=s.heartbeat_timeout_s,
                         sim_speed=s.sim_speed, baud=s.baud)
     return make_boat(frame, config=config, key=key, gnss_error=s.sim_gnss_error,
-                     vehicle=vehicle or make_vehicle("dynamic", scenario),
+                     vehicle=vehicle or make_vehicle(
+                         "dynamic", scenario, sensors="rtk" if s.sim_gnss_error else "exact"),
                      x=scenario.start.x, y=scenario.start.y, clock=clock)
 
 

@@ -683,7 +683,12 @@ class BoatProtocol:
         `urgent`: ahead of the queued telemetry, never dropped."""
         s = self.vehicle.state
         e = self.codec.mav
-        dx, dy = self.gps.sample(1.0 / self.cfg.telemetry_hz)
+        # a vehicle with sensors reports what it measures; a kinematic one its truth, so
+        # its fixes get the GPS error here
+        sensed = getattr(self.vehicle, "sensed", False)
+        dx, dy = (0.0, 0.0) if sensed else self.gps.sample(1.0 / self.cfg.telemetry_hz)
+        fix_type, satellites, hdop = getattr(self.vehicle, "gnss_status", None) or (
+            self.gps.fix_type, self.gps.satellites, self.gps.hdop)
         lat, lon = self.frame.to_geodetic(s.x + dx, s.y + dy)
         lat_e7, lon_e7 = E7.to_wire(float(lat)), E7.to_wire(float(lon))
         compass = self.frame.heading_to_compass_deg
@@ -699,10 +704,10 @@ class BoatProtocol:
             send(e.attitude_encode(t_ms, 0.0, 0.0, yaw, 0.0, 0.0, -s.yaw_rate), now,
                  telemetry=True)
             send(e.gps_raw_int_encode(
-                int(self.boat_time * 1e6), self.gps.fix_type, lat_e7, lon_e7, 0,
-                _clamp(round(self.gps.hdop * 100), 0, 0xFFFE), 0xFFFF,
+                int(self.boat_time * 1e6), fix_type, lat_e7, lon_e7, 0,
+                _clamp(round(hdop * 100), 0, 0xFFFE), 0xFFFF,
                 _clamp(CM.to_wire(s.speed), 0, 0xFFFE), CDEG.to_wire(cog),
-                self.gps.satellites), now, telemetry=True)
+                satellites), now, telemetry=True)
             throttle = _clamp(round(50 * (abs(s.thrust_left) + abs(s.thrust_right))), 0, 100)
             send(e.vfr_hud_encode(s.speed, s.speed, round(hdg) % 360, throttle, 0.0, 0.0), now,
                  telemetry=True)

@@ -9,6 +9,15 @@ position, COG/SOG, heading, yaw rate) and their own thrust; the drift they
 compensate comes from an online `DriftObserver`, never from the simulator's
 environment.
 
+Sensors, not truth (issue 23): the measurement comes from the boat's sensors
+(`sim.sensors.BoatSensors` with a named `SensorProfile`: GNSS noise, bias, latency and
+outages, compass bias, noise and lag, gyro), and the hull may differ from the one its
+observer and autopilot were tuned on (`HullMismatch`: the model steps the true hull, the
+controllers keep `params`). `state` is what the boat measures (and so what its telemetry
+says); `truth` is the true state, for the judge of a trial or a bench only. With a
+`relative` GNSS (moving-baseline RTK) the fix is relative to the true ramp, which a sea
+that knows it gives through `set_true_frame` (default: the frame the boat was told).
+
 The mission clock runs only while the boat tracks: hold and shore-assisted
 guidance stop it, resume continues from where it stopped (AV-LOS then
 speeds up to make up lost ground). HOLD (and READY, before start) keeps
@@ -38,13 +47,14 @@ from dataclasses import dataclass, replace
 
 from usvstation.control.select import CONTROLLERS, make_controller
 from usvstation.dynamics import Environment, ThrustCommand, Vessel, VesselState, otter
-from usvstation.dynamics.params import VesselParams
+from usvstation.dynamics.params import HullMismatch, VesselParams
 from usvstation.guidance import Trajectory
 from usvstation.guidance.compensation import EstimatedDrift
 from usvstation.guidance.observer import DriftObserver, Measurement
 from usvstation.guidance.select import GUIDANCE_METHODS, make_guidance
 from usvstation.guidance.station import StationKeeper
 from usvstation.sim.frame import RampMotion
+from usvstation.sim.sensors import BoatSensors, SensorProfile
 from usvstation.sim.vehicle import VehicleState, Waypoint, checked_mission, leg_cross_track
 
 CONTROL_PERIOD = 0.05  # s, autopilot and model
@@ -68,10 +78,13 @@ class DynamicVehicle:
     def __init__(self, x: float, y: float, heading: float, *, speed: float = 0.0,
                  params: VesselParams | None = None, env: Environment | None = None,
                  accel: float = 0.5, guidance: str = "avlos_comp",
-                 controller: str = "pid", frame: RampMotion | None = None) -> None:
+                 controller: str = "pid", frame: RampMotion | None = None,
+                 sensors: str | SensorProfile = "exact", hull: HullMismatch | None = None,
+                 seed: int = 0) -> None:
         """At (x, y) heading `heading` making `speed` along it; with `frame` these are in
         the moving ramp frame (the start relative to the ship) and the vehicle tracks in it
-        from the start."""
+        from the start. `params` is the hull the boat's controllers know; `hull` how the
+        real one differs; `sensors` (a profile or its name) and `seed` what it measures."""
         if guidance not in GUIDANCE_METHODS:
             raise ValueError(f"guidance: unknown method {guidance!r}; "
                              f"available: {', '.join(GUIDANCE_METHODS)}")
@@ -79,6 +92,9 @@ class DynamicVehicle:
             raise ValueError(f"controller: unknown {controller!r}; "
                              f"available: {', '.join(CONTROLLERS)}")
         self.params = params or otter()
+        self.hull = hull or HullMismatch()
+        self.true_params = self.hull.apply(self.params)
+        self.sensors = BoatSensors(sensors, seed)
         self.env = env or Environment.with_current(0.0, 0.0)
         self.accel = accel
         self.guidance_method = guidance
@@ -93,9 +109,9 @@ class DynamicVehicle:
             gx, gy = speed * math.cos(psi) + px, speed * math.sin(psi) + py
             c, s = math.cos(psi), math.sin(psi)
             start = VesselState(wx, wy, psi, gx * c + gy * s, -gx * s + gy * c)
-        self.vessel = Vessel(self.params, start)
+        self.vessel = Vessel(self.true_params, start)
         if speed > 0.0:
-            trim = 0.5 * self.params.surge_drag(speed)
+            trim = 0.5 * self.true_params.surge_drag(speed)
             self.vessel.set_initial_thrust(ThrustCommand(trim, trim))
         self.pilot = make_controller(controller, self.params)
         self.observer = DriftObserver(self.params)
@@ -110,21 +126,46 @@ class DynamicVehicle:
         self._next_guidance = 0.0
         self._command: _Command | None = None
         self._guided = _Command(heading, 0.0)
-        self._thrust = ThrustCommand(0.0, 0.0)
+        # what the controllers commanded to get the propellers' initial shaft speeds
+        nominal = self.params.thrusters
+        self._thrust = ThrustCommand(*(nominal.thrust(n) for n in self.vessel.shaft_speeds))
         self._segment = 0
         self._complete = False
         self._idle_time = 0.0  # boat time spent held on the ramp (the model is frozen)
         self._clock = 0.0  # the vehicle's time: every dt stepped (BoatProtocol's boat time)
         self._motion = motion  # the ramp frame in the world frame (identity: fixed)
         self._on_ramp: tuple[float, float, float] | None = None  # ramp-frame x, y, psi
+        self._true_ramp: RampMotion | None = None  # for a relative GNSS (None: _motion)
+        self._fix = self.sensors.measure(self.vessel.state, 0.0, self._ramp_truth(0.0))
         self._meas = self._measure(0.0)
-        self.observer.start(self._meas, self.vessel.thrust)
+        self.observer.start(self._meas, (self._thrust.left, self._thrust.right))
         self._state = self._report()
 
     # --- Vehicle interface --------------------------------------------------------
     @property
     def state(self) -> VehicleState:
+        """What the boat measures (its navigation solution), in the world frame."""
         return self._state
+
+    @property
+    def truth(self) -> VehicleState:
+        """The true state (world frame): for the judge of a trial or a bench, never for
+        the boat's own decisions."""
+        return self._report(truth=True)
+
+    sensed = True  # `state` is measured: the boat adds no error of its own to it
+
+    @property
+    def gnss_status(self) -> tuple[int, int, float]:
+        """(GPS_FIX_TYPE, satellites, HDOP) as GPS_RAW_INT reports them (no fix in an
+        outage)."""
+        g = self.sensors.profile.gnss
+        return (g.fix_type if self.sensors.fix_ok else 1), g.satellites, g.hdop
+
+    @property
+    def measurement(self) -> Measurement:
+        """The latest navigation fix in the ramp frame (what guidance steered on)."""
+        return self._meas
 
     @property
     def phase(self) -> str:
@@ -183,6 +224,11 @@ class DynamicVehicle:
     def frame(self) -> RampMotion:
         return self._motion
 
+    def set_true_frame(self, motion: RampMotion | None) -> None:
+        """The ramp's true motion (vehicle clock), which a relative GNSS measures against
+        (None: the frame the boat was told, `set_frame`)."""
+        self._true_ramp = motion
+
     def set_frame(self, motion: RampMotion, *, reanchor: bool = False) -> None:
         """The ramp frame's motion in the world frame (times on the vehicle's clock, the
         sum of the steps' dt). Waypoints and hold points are ramp-frame points from now
@@ -198,8 +244,11 @@ class DynamicVehicle:
         """`state` as seen in the ramp frame of now (position, heading, velocity relative
         to the ramp)."""
         s = self._state
-        f = self._motion.at(self._clock)
-        m = f.measure(Measurement(s.x, s.y, s.heading, s.speed, s.course, s.yaw_rate, s.t))
+        if self._phase == "done":
+            f = self._motion.at(self._clock)
+            m = f.measure(Measurement(s.x, s.y, s.heading, s.speed, s.course, s.yaw_rate, s.t))
+        else:
+            m = self._meas  # the navigation fix, in the ramp frame of its own instant
         return replace(s, x=m.x, y=m.y, heading=m.psi, speed=m.sog, course=m.cog,
                        yaw_rate=m.r)
 
@@ -222,16 +271,29 @@ class DynamicVehicle:
         if self._complete:
             self._phase = "done"
 
+    def _ramp_truth(self, t: float) -> RampMotion:
+        return (self._true_ramp or self._motion).at(t)
+
     def _measure(self, t: float) -> Measurement:
-        """The vessel's fix in the ramp frame as the frame is at vehicle time t."""
-        return self._motion.at(t).measure(Measurement.of(self.vessel.state))
+        """The latest fix in the ramp frame as the frame is at vehicle time t."""
+        if self.sensors.relative:
+            return self._fix
+        return self._motion.at(t).measure(self._fix)
 
     def _control_step(self, t: float) -> None:
         if self._phase == "done":  # recovered: the ramp holds the boat
             self._thrust = ThrustCommand(0.0, 0.0)
             self._idle_time += CONTROL_PERIOD
             return
+        self._fix = self.sensors.measure(self.vessel.state, t, self._ramp_truth(t))
         s = self._meas = self._measure(t)
+        if self._phase == "track" and self._passed_end(s):
+            self._complete = True
+            self._phase = "done"
+            self._on_ramp = self._ramp_pose(t)
+            self._thrust = ThrustCommand(0.0, 0.0)
+            self._idle_time += CONTROL_PERIOD
+            return
         self.observer.update(s, (self._thrust.left, self._thrust.right), CONTROL_PERIOD)
         command = self._steer(s)
         if command is None:
@@ -242,11 +304,11 @@ class DynamicVehicle:
         self.vessel.step(self._thrust, self.env, CONTROL_PERIOD)
         if self._phase == "track":
             self._tau += CONTROL_PERIOD
-            after = self._measure(t + CONTROL_PERIOD)
-            if self._passed_end(after):
-                self._complete = True
-                self._phase = "done"
-                self._on_ramp = (after.x, after.y, after.psi)
+
+    def _ramp_pose(self, t: float) -> tuple[float, float, float]:
+        """The true hull's ramp-frame x, y and heading (where the ramp holds it)."""
+        m = self._ramp_truth(t).measure(Measurement.of(self.vessel.state))
+        return m.x, m.y, m.psi
 
     def _steer(self, s: Measurement) -> _Command | None:
         if self._phase == "track" and self._guide is not None:
@@ -269,10 +331,17 @@ class DynamicVehicle:
         lx, ly = b.x - a.x, b.y - a.y
         return (s.x - b.x) * lx + (s.y - b.y) * ly >= 0.0
 
-    def _report(self) -> VehicleState:
+    def _report(self, truth: bool = False) -> VehicleState:
+        """The state in the world frame: measured (the navigation solution of the last
+        control step) or, with `truth`, the true one."""
         s = self.vessel.state
-        x, y, psi, r = s.x, s.y, s.psi, s.r
-        vx, vy = s.velocity
+        if truth:
+            x, y, psi, r = s.x, s.y, s.psi, s.r
+            vx, vy = s.velocity
+        else:
+            m = self._nav_world()
+            x, y, psi, r = m.x, m.y, m.psi, m.r
+            vx, vy = m.velocity
         full = self.params.thrusters.thrust_max
         index = min(self._segment + 1, max(len(self._wps) - 1, 0))
         f = self._motion.at(self._clock)
@@ -292,3 +361,9 @@ class DynamicVehicle:
             waypoint_index=index, cross_track_error=leg_cross_track(self._wps, rx, ry, index),
             mission_complete=self._complete,
         )
+
+    def _nav_world(self) -> Measurement:
+        """The navigation solution in the world frame."""
+        if self.sensors.relative:
+            return self._motion.at(self._meas.t).unmeasure(self._meas)
+        return self._fix

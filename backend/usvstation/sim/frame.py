@@ -97,3 +97,18 @@ class RampMotion:
         psi = m.psi - f.theta
         return Measurement(x, y, psi, sog, math.atan2(uy, ux) if sog > 1e-9 else psi,
                            m.r - f.omega, m.t)
+
+    def unmeasure(self, m: Measurement) -> Measurement:
+        """A ramp-frame fix in the world frame: the inverse of `measure`."""
+        f = self
+        if f.identity:
+            return m
+        x, y = f.to_world(m.x, m.y)
+        ux, uy = m.velocity
+        c, s = math.cos(f.theta), math.sin(f.theta)
+        px, py = f.point_velocity(x, y)
+        vx, vy = c * ux - s * uy + px, s * ux + c * uy + py
+        sog = math.hypot(vx, vy)
+        psi = m.psi + f.theta
+        return Measurement(x, y, psi, sog, math.atan2(vy, vx) if sog > 1e-9 else psi,
+                           m.r + f.omega, m.t)

@@ -12,23 +12,28 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from usvstation.clock import REAL_CLOCK, Clock
+from usvstation.dynamics.params import HullMismatch
 from usvstation.geo import RampFrame
 from usvstation.link.transport import ByteStream, open_stream
 from usvstation.scenario import Scenario
 from usvstation.sim.boat import BoatConfig, BoatProtocol, NonVolatile
-from usvstation.sim.sensors import GpsNoise
+from usvstation.sim.sensors import GpsNoise, SensorProfile
 from usvstation.sim.vehicle import KinematicVehicle, Vehicle
 
 VEHICLES = ("dynamic", "kinematic")
 
 
 def make_vehicle(kind: str, scenario: Scenario, sea_state: int = 0,
-                 guidance: str = "avlos_comp", controller: str = "pid") -> Vehicle:
+                 guidance: str = "avlos_comp", controller: str = "pid", *,
+                 sensors: str | SensorProfile = "rtk", hull: HullMismatch | None = None,
+                 seed: int = 0) -> Vehicle:
     """The simulated vehicle at the scenario's start pose.
 
     'dynamic' (default): the 3-DOF Otter with `guidance` (compensated AV-LOS
     by default) and `controller` (the PID autopilot by default) in the
-    scenario's current and wind, plus waves of `sea_state` (0: none).
+    scenario's current and wind, plus waves of `sea_state` (0: none); it steers on
+    `sensors` (a sim.sensors profile or its name: exact, rtk, gnss, rtk-moving-base)
+    drawn from `seed`, and its real hull differs from its controllers' model by `hull`.
     'kinematic': follows the mission exactly (for protocol tests).
     """
     start = scenario.start
@@ -46,7 +51,7 @@ def make_vehicle(kind: str, scenario: Scenario, sea_state: int = 0,
     return DynamicVehicle(start.x, start.y, heading, speed=start.speed,
                           env=Environment.from_scenario(env, waves=waves),
                           accel=scenario.vessel.accel_max, guidance=guidance,
-                          controller=controller)
+                          controller=controller, sensors=sensors, hull=hull, seed=seed)
 
 
 @dataclass
@@ -123,7 +128,8 @@ def make_boat(frame: RampFrame, *, x: float = 85.0, y: float = 10.0, heading_deg
               gnss_error: bool = True, clock: Clock = REAL_CLOCK) -> BoatProtocol:
     """A simulated boat at ramp-frame (x, y) with a KinematicVehicle unless one is given;
     signing with `key` (None: unsigned, --insecure-link), its time from `clock`;
-    `gnss_error` False: its fixes report its exact position."""
+    `gnss_error` False: a KinematicVehicle's fixes report its exact position (a vehicle
+    with sensors, make_vehicle's 'dynamic', reports what its sensor profile measures)."""
     vehicle = vehicle or KinematicVehicle(x, y, math.radians(heading_deg))
     gps = GpsNoise(seed=seed) if gnss_error else GpsNoise(bias_std_m=0.0, white_std_m=0.0)
     return BoatProtocol(vehicle, frame, config or BoatConfig(), key=key, nv=nv,

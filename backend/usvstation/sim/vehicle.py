@@ -54,7 +54,14 @@ class Vehicle(Protocol):
     """A boat model the simulated boat can drive (sim/boat.py)."""
 
     @property
-    def state(self) -> VehicleState: ...
+    def state(self) -> VehicleState:
+        """What the boat knows of itself (measured); its telemetry reports this."""
+        ...
+
+    @property
+    def truth(self) -> VehicleState:
+        """The true state, for a trial's judge or a bench only."""
+        ...
 
     def step(self, dt: float) -> None:
         """Advance boat time by dt seconds."""
@@ -153,6 +160,12 @@ class KinematicVehicle:
             self._state = replace(self._state, x=x, y=y,
                                   heading=w.heading - motion.at(self._clock).theta)
         self._motion = motion
+
+    sensed = False  # `state` is the truth: the boat adds its GPS error to its telemetry
+
+    @property
+    def truth(self) -> VehicleState:
+        return self.state
 
     @property
     def phase(self) -> str:

@@ -56,6 +56,9 @@ class Conditions:
     current_dir_deg: float
     current_change_s: float  # after START: when a step or reversal happens
     sea_state: int
+    sensor: str  # the boat's sensor profile (sim/sensors.py)
+    drag_scale: float  # the true hull against the model the boat was tuned on
+    thrust_scale: float
     link_loss: tuple[float, float] | None  # (after START, duration) of radio silence
     operator_hold: tuple[float, float] | None  # (after START, duration) of HOLD
 
@@ -87,7 +90,8 @@ def draw_episode(spec: TrialSpec, index: int) -> Episode:
         current_speed=float(pick(f.current_speed)),
         current_dir_deg=round(float(rng.uniform(0.0, 360.0)), 1),
         current_change_s=round(float(rng.uniform(10.0, 30.0)), 1),
-        sea_state=int(pick(f.sea_state)),
+        sea_state=int(pick(f.sea_state)), sensor=pick(f.sensor),
+        drag_scale=float(pick(f.drag_scale)), thrust_scale=float(pick(f.thrust_scale)),
         link_loss=_window(rng, (5.0, 25.0), (2.0, 6.0)) if pick(f.link_loss) == "burst" else None,
         operator_hold=(_window(rng, (5.0, 25.0), (5.0, 15.0))
                        if pick(f.operator_hold) == "hold" else None))
@@ -200,7 +204,7 @@ class Judge:
             self.states.append(state)
             if state == "RUNNING" and self.started_at is None:
                 self.started_at = self.clock.now()
-        truth = boat.vehicle.state
+        truth = boat.vehicle.truth  # never what the boat measures
         rx, ry = self._ramp_origin()
         bx, by = truth.x - rx, truth.y - ry  # the boat in the ship-fixed ramp frame
         half = self.scenario.vessel.length / 2.0
@@ -338,6 +342,7 @@ async def _episode(clock: SimClock, ep: Episode, folder: Path) -> dict[str, Any]
     import httpx
 
     from usvstation.api.app import create_app
+    from usvstation.dynamics.params import HullMismatch
     from usvstation.sim.runner import make_vehicle
 
     cond = ep.conditions
@@ -345,7 +350,10 @@ async def _episode(clock: SimClock, ep: Episode, folder: Path) -> dict[str, Any]
     settings = Settings(data_dir=folder, token=TOKEN, replan=ep.replan, link="sim",
                         nmea=[])
     station = Station(settings, clock, in_process=True, scenario=scenario)
-    station.sim_vehicle = lambda sc: make_vehicle("dynamic", sc, sea_state=cond.sea_state)
+    hull = HullMismatch(cond.drag_scale, cond.thrust_scale)
+    station.sim_vehicle = lambda sc: make_vehicle(
+        "dynamic", sc, sea_state=cond.sea_state, sensors=cond.sensor, hull=hull,
+        seed=ep.seed * 100_003 + ep.index)
     alerts: list[str] = []
     station.hub.observers.append(
         lambda kind, data: alerts.append(str(data.get("kind"))) if kind == "alert" else None)

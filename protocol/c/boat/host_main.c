@@ -5,7 +5,7 @@
  *   usv_boat_host DEVICE|PORT|pty (--link-key PATH | --insecure-link) [--boat-id N]
  *       [--station-id N] [--speedup X] [--lat DEG --lon DEG --heading-deg DEG]
  *       [--telemetry-hz HZ] [--start-radius M] [--link-timeout-s S] [--duration S]
- *       [--nv-file PATH] [--baud BPS]
+ *       [--nv-file PATH] [--baud BPS] [--sensors exact|rtk|gnss|rtk-moving-base] [--seed N]
  *
  * A PORT (digits) listens on 127.0.0.1:PORT (0: any free port) for one client at a time,
  * e.g. `usv-station serve --link socket://127.0.0.1:PORT`; `pty` creates a pseudo-terminal
@@ -17,6 +17,13 @@
  * the link timeouts (failsafe, duplicate memory, staging expiry) stay in wall time.
  * The "UART interrupt" is the read() of the main loop: bytes go to usv_boat_rx_byte(),
  * usv_boat_poll() parses them afterwards, as on the microcontroller.
+ *
+ * Sensors, not truth: the boat gets its navigation from a sensor model (--sensors, default
+ * rtk; seeded by --seed), never the vehicle's true state, as backend/usvstation/sim/
+ * sensors.py: GNSS fixes at a rate, a latency old and dead-reckoned between them and
+ * through outages, with white noise and a Gauss-Markov wander (rtk 0.02 m, gnss 1.5 m
+ * CEP); compass bias, noise and lag; gyro bias and noise. The host has no moving ramp, so
+ * rtk-moving-base (relative to the ramp) measures like rtk here.
  */
 #define _XOPEN_SOURCE 600
 #define _DEFAULT_SOURCE
@@ -55,11 +62,36 @@ typedef struct {
     int16_t left, right;  /* per mille */
 } vehicle_t;
 
+/* ---- the sensor model (see the header comment) */
+typedef struct {
+    double white_m, bias_m, bias_tau_s, vel_mps, rate_hz, latency_s, drop_per_min, drop_s;
+    double compass_noise_rad, compass_lag_s, gyro_bias, gyro_noise;
+    uint8_t fix_type, satellites;
+} sensor_spec_t;
+
+typedef struct {
+    double t, north, east, vn, ve; /* a fix: when taken, where, how fast */
+} fix_t;
+
+#define FIX_QUEUE 16
+typedef struct {
+    sensor_spec_t spec;
+    uint64_t rng;
+    double bias_n, bias_e;
+    fix_t queue[FIX_QUEUE];
+    int head, len;
+    fix_t latest;
+    int have_latest;
+    double next_fix, outage_until, heading, last_t;
+    int have_heading;
+} sensors_t;
+
 typedef struct {
     int fd;                /* the link: device or accepted client; -1 none */
     double speedup;
     struct timespec start;
     vehicle_t veh;
+    sensors_t sens;
     unsigned long sent_bytes;
 } host_t;
 
@@ -124,21 +156,133 @@ static void vehicle_step(vehicle_t *v, double dt)
     v->east += v->speed * sin(v->heading) * dt;
 }
 
-static void vehicle_nav(const vehicle_t *v, usv_nav_t *nav)
+static int sensor_spec(const char *name, sensor_spec_t *s)
 {
-    double lat = v->lat0 + v->north / EARTH_R * 180.0 / PI_D;
-    double lon = v->lon0 + v->east / (EARTH_R * cos(v->lat0 * PI_D / 180.0)) * 180.0 / PI_D;
+    memset(s, 0, sizeof *s);
+    s->bias_tau_s = 120.0;
+    s->fix_type = 3;
+    s->satellites = 12;
+    if (strcmp(name, "exact") == 0) {
+        return 0;
+    }
+    s->compass_noise_rad = 0.5 * PI_D / 180.0;
+    s->compass_lag_s = 0.2;
+    s->gyro_bias = 0.05 * PI_D / 180.0;
+    s->gyro_noise = 0.1 * PI_D / 180.0;
+    if (strcmp(name, "rtk") == 0 || strcmp(name, "rtk-moving-base") == 0) {
+        s->white_m = 0.02, s->bias_m = 0.005, s->bias_tau_s = 300.0, s->vel_mps = 0.03;
+        s->rate_hz = 10.0, s->latency_s = 0.05, s->drop_per_min = 0.1, s->drop_s = 1.0;
+        s->fix_type = 6, s->satellites = 16;
+        return 0;
+    }
+    if (strcmp(name, "gnss") == 0) {
+        s->white_m = 0.4, s->bias_m = 1.2, s->bias_tau_s = 120.0, s->vel_mps = 0.1;
+        s->rate_hz = 5.0, s->latency_s = 0.1, s->drop_per_min = 0.2, s->drop_s = 2.0;
+        s->fix_type = 3, s->satellites = 10;
+        return 0;
+    }
+    return -1;
+}
+
+static double rng_uniform(sensors_t *z) /* xorshift64*, in (0, 1) */
+{
+    z->rng ^= z->rng >> 12;
+    z->rng ^= z->rng << 25;
+    z->rng ^= z->rng >> 27;
+    return ((double)((z->rng * 2685821657736338717ull) >> 11) + 0.5) / 9007199254740992.0;
+}
+
+static double rng_normal(sensors_t *z, double std)
+{
+    double u = rng_uniform(z), v = rng_uniform(z);
+    return std > 0.0 ? std * sqrt(-2.0 * log(u)) * cos(2.0 * PI_D * v) : 0.0;
+}
+
+static void sensors_init(sensors_t *z, const sensor_spec_t *spec, uint64_t seed)
+{
+    memset(z, 0, sizeof *z);
+    z->spec = *spec;
+    z->rng = seed * 0x9E3779B97F4A7C15ull + 0x2545F4914F6CDD1Dull;
+    if (z->rng == 0) {
+        z->rng = 1;
+    }
+    z->bias_n = rng_normal(z, spec->bias_m);
+    z->bias_e = rng_normal(z, spec->bias_m);
+    z->next_fix = -1e300;
+    z->outage_until = -1e300;
+}
+
+static double wrap_2pi(double a)
+{
+    a = fmod(a, 2.0 * PI_D);
+    return a < 0.0 ? a + 2.0 * PI_D : a;
+}
+
+/* the boat's navigation solution at boat time t from the vehicle's true state */
+static void sensors_nav(sensors_t *z, const vehicle_t *v, double t, usv_nav_t *nav)
+{
+    const sensor_spec_t *s = &z->spec;
+    double dt = z->have_latest ? t - z->last_t : 0.0, age, north, east, lat, lon, sog, d;
+    double vn = v->speed * cos(v->heading), ve = v->speed * sin(v->heading);
+    int ok;
+    if (dt < 0.0) {
+        dt = 0.0;
+    }
+    z->last_t = t;
+    if (s->bias_m > 0.0 && dt > 0.0) {
+        double a = exp(-dt / s->bias_tau_s), w = s->bias_m * sqrt(1.0 - a * a);
+        z->bias_n = a * z->bias_n + rng_normal(z, w);
+        z->bias_e = a * z->bias_e + rng_normal(z, w);
+    }
+    if (s->drop_per_min > 0.0 && dt > 0.0 && t >= z->outage_until &&
+        rng_uniform(z) < 1.0 - exp(-s->drop_per_min / 60.0 * dt)) {
+        z->outage_until = t - s->drop_s * log(rng_uniform(z));
+    }
+    ok = t >= z->outage_until;
+    if (t >= z->next_fix && (ok || !z->have_latest)) {
+        fix_t f;
+        f.t = t;
+        f.north = v->north + z->bias_n + rng_normal(z, s->white_m);
+        f.east = v->east + z->bias_e + rng_normal(z, s->white_m);
+        f.vn = vn + rng_normal(z, s->vel_mps);
+        f.ve = ve + rng_normal(z, s->vel_mps);
+        if (!z->have_latest) {
+            z->latest = f, z->have_latest = 1;
+        }
+        if (z->len == FIX_QUEUE) { /* a full queue drops its oldest */
+            z->head = (z->head + 1) % FIX_QUEUE, z->len--;
+        }
+        z->queue[(z->head + z->len) % FIX_QUEUE] = f, z->len++;
+        z->next_fix = s->rate_hz > 0.0 ? t + 1.0 / s->rate_hz : t;
+    }
+    while (z->len > 0 && z->queue[z->head].t + s->latency_s <= t + 1e-12) {
+        z->latest = z->queue[z->head];
+        z->head = (z->head + 1) % FIX_QUEUE, z->len--;
+    }
+    age = t - z->latest.t; /* dead-reckoned from the latest fix */
+    north = z->latest.north + z->latest.vn * age;
+    east = z->latest.east + z->latest.ve * age;
+    if (!z->have_heading || s->compass_lag_s <= 0.0) {
+        z->heading = v->heading, z->have_heading = 1;
+    } else {
+        d = remainder(v->heading - z->heading, 2.0 * PI_D);
+        z->heading = wrap_2pi(z->heading + (1.0 - exp(-dt / s->compass_lag_s)) * d);
+    }
+    lat = v->lat0 + north / EARTH_R * 180.0 / PI_D;
+    lon = v->lon0 + east / (EARTH_R * cos(v->lat0 * PI_D / 180.0)) * 180.0 / PI_D;
+    sog = sqrt(z->latest.vn * z->latest.vn + z->latest.ve * z->latest.ve);
     memset(nav, 0, sizeof *nav);
     nav->lat_e7 = (int32_t)lround(lat * 1e7);
     nav->lon_e7 = (int32_t)lround(lon * 1e7);
-    nav->heading_rad = (float)v->heading;
-    nav->course_rad = (float)(v->speed >= 0.0 ? v->heading : fmod(v->heading + PI_D, 2 * PI_D));
-    nav->speed_mps = (float)fabs(v->speed);
-    nav->yaw_rate = (float)v->yaw_rate;
+    nav->heading_rad = (float)wrap_2pi(z->heading + rng_normal(z, s->compass_noise_rad));
+    nav->course_rad = (float)(sog > 1e-6 ? wrap_2pi(atan2(z->latest.ve, z->latest.vn))
+                                         : nav->heading_rad);
+    nav->speed_mps = (float)sog;
+    nav->yaw_rate = (float)(v->yaw_rate + s->gyro_bias + rng_normal(z, s->gyro_noise));
     nav->battery_mv = 25200;
     nav->battery_pct = 90;
-    nav->fix_type = 3;
-    nav->satellites = 12;
+    nav->fix_type = ok ? s->fix_type : 1; /* GPS_FIX_TYPE_NO_FIX in an outage */
+    nav->satellites = s->satellites;
 }
 
 /* ---- key file: 32 raw bytes or 64 hex digits (whitespace around allowed) */
@@ -298,7 +442,8 @@ static int usage(const char *why)
                     "--insecure-link) [--boat-id N] [--station-id N] [--speedup X] [--lat DEG] "
                     "[--lon DEG] [--heading-deg DEG] [--telemetry-hz HZ] [--start-radius M] "
                     "[--link-timeout-s S] [--staging-expiry-s S] [--baud BPS] [--duration S] "
-                    "[--nv-file PATH]\n", why);
+                    "[--nv-file PATH] [--sensors exact|rtk|gnss|rtk-moving-base] "
+                    "[--seed N]\n", why);
     return 2;
 }
 
@@ -337,7 +482,8 @@ int main(int argc, char **argv)
     usv_config_t cfg;
     usv_hal_t hal;
     uint8_t key[32];
-    const char *where = NULL, *key_path = NULL, *nv_path = NULL;
+    const char *where = NULL, *key_path = NULL, *nv_path = NULL, *sensors = "rtk";
+    sensor_spec_t spec;
     char pty_name[256];
     int pty_slave = -1;
     uint64_t floor_saved = 0;
@@ -345,6 +491,7 @@ int main(int argc, char **argv)
     int insecure = 0, listen_fd = -1, port = -1, bound = 0, i;
     double boat_id = 1, station_id = 255, speedup = 1, lat = 59.9, lon = 10.7, heading = 0;
     double tel_hz = 5, radius = 10, timeout_s = 3, duration = 0, staging_s = 30, baud = 0;
+    double seed = 0;
     double last_t, sim_t;
     struct timeval tv;
 
@@ -375,6 +522,11 @@ int main(int argc, char **argv)
         } else if (strcmp(a, "--nv-file") == 0) {
             nv_path = v;
             continue;
+        } else if (strcmp(a, "--sensors") == 0) {
+            sensors = v;
+            continue;
+        } else if (strcmp(a, "--seed") == 0) {
+            num = &seed, lo = 0, hi = 4294967295.0;
         } else if (strcmp(a, "--boat-id") == 0) {
             num = &boat_id, lo = 1, hi = 255;
         } else if (strcmp(a, "--station-id") == 0) {
@@ -421,6 +573,11 @@ int main(int argc, char **argv)
     if (key_path != NULL && read_key(key_path, key) != 0) {
         return 2;
     }
+    if (sensor_spec(sensors, &spec) != 0) {
+        fprintf(stderr, "usv_boat_host: --sensors %s: unknown profile (exact, rtk, gnss, "
+                        "rtk-moving-base)\n", sensors);
+        return 2;
+    }
 
     memset(&cfg, 0, sizeof cfg);
     cfg.boat_id = (uint8_t)boat_id;
@@ -457,6 +614,7 @@ int main(int argc, char **argv)
     host.veh.max_speed = cfg.max_speed_mps;
     host.veh.max_yaw_rate = 1.0;
     host.veh.tau = 0.3;
+    sensors_init(&host.sens, &spec, (uint64_t)seed);
     hal.send = hal_send;
     hal.now_ms = hal_now_ms;
     hal.actuate = hal_actuate;
@@ -566,7 +724,7 @@ int main(int argc, char **argv)
         }
         {
             usv_nav_t nav;
-            vehicle_nav(&host.veh, &nav);
+            sensors_nav(&host.sens, &host.veh, sim_t, &nav); /* what it measures, not truth */
             usv_boat_set_nav(&boat, &nav);
         }
         usv_boat_poll(&boat);
