@@ -76,6 +76,9 @@ class PlanJob(TypedDict):
     scenario: JsonObject
     plan: PlanDocument | None
     error: str | None
+    # the working scenario the plan was asked against, a digest per top-level field (a plan
+    # from the boat or from the live world changes the start, obstacles or current of it)
+    basis: dict[str, str] | None
 
 
 class PlanSummary(TypedDict):

@@ -11,7 +11,7 @@ from usvstation.api.charts import read_package, read_tile
 from usvstation.link.protocol import LinkDown, LinkUp
 from usvstation.scenario import load_scenario
 from usvstation.services.alerts import LinkAlerts
-from usvstation.services.plans import outdated_by
+from usvstation.services.plans import outdated_by, scenario_digest
 from usvstation.world.monitor import AlertEvent
 
 
@@ -30,11 +30,26 @@ def test_link_lost_raises_one_warning_and_one_advisory_when_back():
 
 def test_outdated_by_names_the_changed_fields_of_the_same_scenario():
     case1 = load_scenario("case1")
-    planned = case1.model_dump(mode="json")
-    assert outdated_by(planned, case1) == []
     moved = case1.model_copy(update={"start": case1.start.model_copy(update={"x": 80.0})})
-    assert outdated_by(planned, moved) == ["start"]
-    assert outdated_by(load_scenario("case2").model_dump(mode="json"), moved) == []
+    # a job stored before bases were kept: its own scenario against the working one
+    old = {"scenario": case1.model_dump(mode="json"), "basis": None}
+    assert outdated_by(old, case1) == []
+    assert outdated_by(old, moved) == ["start"]
+    assert outdated_by({"scenario": load_scenario("case2").model_dump(mode="json"),
+                        "basis": None}, moved) == []
+
+
+def test_a_plan_made_from_the_working_scenario_stays_uploadable_until_it_changes():
+    """A plan from the boat (or the live world) has another start (obstacles, current)
+    than the working scenario it was made from: not outdated by that, only by a change of
+    the working scenario itself."""
+    case1 = load_scenario("case1")
+    from_boat = case1.model_copy(update={"start": case1.start.model_copy(update={"x": 60.0})})
+    job = {"scenario": from_boat.model_dump(mode="json"), "basis": scenario_digest(case1)}
+    assert outdated_by(job, case1) == []
+    edited = case1.model_copy(update={"vessel": case1.vessel.model_copy(
+        update={"length": 2.0})})
+    assert outdated_by(job, edited) == ["vessel"]
 
 
 def _mbtiles(path, tiles):

@@ -70,6 +70,29 @@ def test_an_old_database_keeps_its_telemetry_and_its_mode_column_becomes_state(t
     (row,) = store.telemetry(None, None, None, 10)
     assert row["state"] == "HOLD" and "mode" not in row
     assert (row["boat_time"], row["x"], row["y"]) == (1.5, 10.0, 2.0)
-    assert store.conn.execute("PRAGMA user_version").fetchone()[0] == 2
+    assert store.conn.execute("PRAGMA user_version").fetchone()[0] == 3
     Store(tmp_path)  # opening it again changes nothing
     assert store.telemetry(None, None, None, 10) == [row]
+
+
+def test_a_schema_2_database_keeps_its_plans_and_gains_their_basis(tmp_path):
+    """Schema 2 kept no basis: its plans load with basis None (compared by scenario)."""
+    import sqlite3
+
+    old = sqlite3.connect(tmp_path / "station.sqlite3")
+    old.executescript("""
+        CREATE TABLE plans (id TEXT PRIMARY KEY, created_at TEXT NOT NULL,
+            status TEXT NOT NULL, planner TEXT NOT NULL, seed INTEGER,
+            scenario TEXT NOT NULL, plan TEXT, error TEXT);
+        INSERT INTO plans VALUES ('p1', '2026-11-22T10:00:00.000Z', 'failed', 'iga', 1,
+            '{"name": "case1"}', NULL, 'no plan');
+        PRAGMA user_version = 2;
+    """)
+    old.commit()
+    old.close()
+    store = Store(tmp_path)
+    (job,) = store.plans()
+    assert (job["id"], job["scenario"], job["basis"]) == ("p1", {"name": "case1"}, None)
+    job["basis"] = {"start": "0123456789abcdef"}
+    store.save_plan(job)
+    assert store.plans()[0]["basis"] == {"start": "0123456789abcdef"}

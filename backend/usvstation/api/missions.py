@@ -26,7 +26,7 @@ router = APIRouter()
 async def post_mission(station: StationDep, req: MissionRequest) -> MissionView:
     job = station.plans.get(req.plan_id)
     if job is not None:  # a plan of the working scenario, which changed since: refused
-        changed = outdated_by(job["scenario"], await station.working_scenario())
+        changed = outdated_by(job, await station.working_scenario())
         if changed:
             raise HTTPException(409, detail=(
                 f"plan {req.plan_id} was made for scenario {job['scenario']['name']!r} as it "

@@ -22,12 +22,16 @@ router = APIRouter()
           responses={429: {"description": "the plan queue is full (Retry-After)"}})
 async def post_plan(station: StationDep, req: PlanRequest | None = None) -> Accepted:
     req = req or PlanRequest()
-    scenario = req.scenario or await station.working_scenario()
+    working = await station.working_scenario()
+    scenario = req.scenario or working
     if req.from_boat:
         handler = station.boat.handler
         scenario = scenario_from_boat(scenario, handler and handler.telemetry,
                                       handler and handler.run_t0)
-    job = await station.plans.submit(scenario, req.planner, req.seed)
+    # the working scenario, or one made from it (from the boat, /api/world/scenario): its
+    # plan stays uploadable until the working scenario itself changes
+    basis = working if scenario.name == working.name else None
+    job = await station.plans.submit(scenario, req.planner, req.seed, basis)
     return Accepted(id=job["id"], status=job["status"])
 
 

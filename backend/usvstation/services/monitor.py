@@ -16,6 +16,7 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import logging
+import math
 import uuid
 from collections.abc import Coroutine
 from typing import cast
@@ -41,7 +42,7 @@ from usvstation.services.plans import PlanService
 from usvstation.services.world import WorldService
 from usvstation.store.alerts import AlertStore
 from usvstation.store.db import utc_now
-from usvstation.world.model import compass_to_enu
+from usvstation.world.model import RampPose, compass_to_enu
 from usvstation.world.monitor import (
     AlertEvent,
     AlertTracker,
@@ -61,6 +62,7 @@ from usvstation.world.replan import (
 
 log = logging.getLogger(__name__)
 MONITOR_EVERY_S = 0.5
+MATCH_M = 2.0  # a plan's obstacle this close to a live target is that target
 ASSESS_MIN_INTERVAL_S = 0.1  # every frame up to 10 Hz (telemetry runs at 5 Hz of boat time)
 DEFAULT_TIME_MARGIN_S = 5.0
 MIN_WARNING_M = 0.3  # the clearance warning threshold when R_c is smaller
@@ -139,11 +141,23 @@ class MonitorService:
         if not job or not job["plan"]:
             return
         self.use_plan(job, run)
-        pose = self.world.world.ramp(self.world.clock.now())
+        t = self.world.clock.now()
+        pose = self.world.world.ramp(t)
         if pose is not None and self.scenario is not None:
-            self.world.world.set_manual(
-                self.world.clock.now(), [(o.x, o.y, o.radius, o.vx, o.vy)
-                                     for o in self.scenario.obstacles], pose.frame)
+            self.world.world.set_manual(t, self._charted(pose, t), pose.frame)
+
+    def _charted(self, pose: RampPose, t: float) -> list[tuple[float, float, float, float,
+                                                               float]]:
+        """The plan's obstacles as the world's `manual` tracks: where the plan put them at
+        its start (the ramp's pose now), their velocity over ground (the plan's is relative
+        to the ramp: the ramp's own velocity added); an obstacle the plan took from a live
+        track (a plan of /api/world/scenario: within MATCH_M of an AIS or radar target now)
+        is that track, not a second one."""
+        assert self.scenario is not None
+        fvx, fvy = (float(v) for v in pose.frame.vector_to_ramp(pose.ve, pose.vn))
+        live = [(g["x"], g["y"]) for g in self.world.world.targets(t) if g["source"] != "manual"]
+        return [(o.x, o.y, o.radius, o.vx + fvx, o.vy + fvy) for o in self.scenario.obstacles
+                if not any(math.hypot(o.x - x, o.y - y) < MATCH_M for x, y in live)]
 
     def use_plan(self, job: PlanJob, run: int | None) -> None:
         """Monitor `job`'s plan from the next frame on (a new run, or a swapped re-plan)."""

@@ -22,6 +22,8 @@ import asyncio
 import contextlib
 import ctypes
 import ctypes.util
+import hashlib
+import json
 import logging
 import multiprocessing
 import os
@@ -126,13 +128,28 @@ def scenario_from_boat(scenario: Scenario, row: TelemetryRow | None,
                        max(float(t), 0.0))
 
 
-def outdated_by(planned: JsonObject, working: Scenario) -> list[str]:
-    """The top-level fields in which the working scenario differs from the one a plan was
-    made for, when the plan was made for the working scenario (same name); else []."""
-    now = working.model_dump(mode="json")
-    if planned.get("name") != now["name"]:
+def scenario_digest(scenario: Scenario) -> dict[str, str]:
+    """A short digest of each top-level field of a scenario (what `basis` keeps)."""
+    doc = scenario.model_dump(mode="json")
+    return {k: hashlib.sha256(json.dumps(v, sort_keys=True).encode()).hexdigest()[:16]
+            for k, v in doc.items()}
+
+
+def outdated_by(job: PlanJob, working: Scenario) -> list[str]:
+    """The top-level fields of the working scenario that changed since the plan was asked
+    against it (its `basis`: a plan from the boat or from the live world differs from the
+    working scenario in its start, obstacles or current, and is not outdated by that); a job
+    without a basis (stored before bases were kept) compares its own scenario, when it was
+    made for the working scenario (same name); else []."""
+    basis = job.get("basis")
+    if basis is not None:
+        now = scenario_digest(working)
+        return sorted(k for k in basis.keys() | now.keys() if basis.get(k) != now.get(k))
+    planned = job["scenario"]
+    current = working.model_dump(mode="json")
+    if planned.get("name") != current["name"]:
         return []
-    return sorted(k for k in planned.keys() | now.keys() if planned.get(k) != now.get(k))
+    return sorted(k for k in planned.keys() | current.keys() if planned.get(k) != current.get(k))
 
 
 def init_worker(memory_mb: int | None = None) -> None:
@@ -233,8 +250,10 @@ class PlanService:
             self._kill(i)
 
     # --- requests ------------------------------------------------------------------------
-    async def submit(self, scenario: Scenario, planner: str, seed: int | None) -> PlanJob:
-        """Queue a job; PlanQueueFull when `queue_max` jobs already wait or run."""
+    async def submit(self, scenario: Scenario, planner: str, seed: int | None,
+                     basis: Scenario | None = None) -> PlanJob:
+        """Queue a job (`basis`: the working scenario it was asked against, when it was);
+        PlanQueueFull when `queue_max` jobs already wait or run."""
         active = sum(1 for j in self.jobs.values() if j["status"] not in FINAL)
         if active >= self.queue_max:
             raise PlanQueueFull(f"{active} plans already queued or running (--plan-queue "
@@ -243,6 +262,7 @@ class PlanService:
             "id": uuid.uuid4().hex[:12], "created_at": utc_now(self.clock), "status": "queued",
             "planner": planner, "seed": seed, "scenario": scenario.model_dump(mode="json"),
             "plan": None, "error": None,
+            "basis": scenario_digest(basis) if basis is not None else None,
         }
         self.jobs[job["id"]] = job
         await self._save(job)

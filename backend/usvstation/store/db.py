@@ -52,7 +52,8 @@ CREATE TABLE IF NOT EXISTS plans (
     seed INTEGER,
     scenario TEXT NOT NULL,
     plan TEXT,
-    error TEXT
+    error TEXT,
+    basis TEXT
 );
 CREATE TABLE IF NOT EXISTS missions (
     id TEXT PRIMARY KEY,
@@ -245,18 +246,22 @@ class TelemetryWriter:
         self.stats.commits += 1
 
 
-SCHEMA_VERSION = 2  # PRAGMA user_version of a database this code wrote
+SCHEMA_VERSION = 3  # PRAGMA user_version of a database this code wrote
 
 
 def migrate(conn: sqlite3.Connection) -> None:
     """Bring a database of an earlier version up to SCHEMA_VERSION, in place.
 
     1 -> 2: the telemetry column `mode` held the boat's state: renamed `state`.
+    2 -> 3: plans gain `basis` (the working scenario a plan was asked against, by field).
     """
     version = conn.execute("PRAGMA user_version").fetchone()[0]
     columns = {r[1] for r in conn.execute("PRAGMA table_info(telemetry)")}
     if "mode" in columns and "state" not in columns:
         conn.execute("ALTER TABLE telemetry RENAME COLUMN mode TO state")
+    plan_columns = {r[1] for r in conn.execute("PRAGMA table_info(plans)")}
+    if plan_columns and "basis" not in plan_columns:
+        conn.execute("ALTER TABLE plans ADD COLUMN basis TEXT")
     if version < SCHEMA_VERSION:
         conn.execute(f"PRAGMA user_version = {SCHEMA_VERSION}")
 
@@ -366,11 +371,12 @@ class Store:
         with self.conn as c:
             c.execute(
                 "INSERT OR REPLACE INTO plans (id, created_at, status, planner, seed, scenario, "
-                "plan, error) VALUES (?, ?, ?, ?, ?, ?, ?, ?)",
+                "plan, error, basis) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
                 (job["id"], job["created_at"], job["status"], job["planner"], job.get("seed"),
                  json.dumps(job["scenario"]),
                  json.dumps(job["plan"]) if job.get("plan") is not None else None,
-                 job.get("error")),
+                 job.get("error"),
+                 json.dumps(job["basis"]) if job.get("basis") is not None else None),
             )
 
     def plans(self) -> list[dict[str, Any]]:
@@ -416,4 +422,5 @@ def _plan_row(row: sqlite3.Row) -> dict[str, Any]:
     d = dict(row)
     d["scenario"] = json.loads(d["scenario"])
     d["plan"] = json.loads(d["plan"]) if d["plan"] else None
+    d["basis"] = json.loads(d["basis"]) if d.get("basis") else None
     return d

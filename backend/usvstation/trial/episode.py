@@ -39,6 +39,7 @@ ARRIVAL_GOOD_DEG = 5.0
 JUDGE_DT = 0.1  # s of simulated time between the judge's samples
 OPERATOR_DT = 0.5  # how often the mate looks at the console
 CONFIRM_DELAY_S = 4.0  # the mate's reaction to a proposed re-plan (replan = confirm)
+RESUME_EVERY_S = 5.0  # how often the mate tries RESUME on a boat that stopped on its own
 CRUISE_GUESS = 1.2  # m/s: where traffic is placed on the boat's way before the plan exists
 TOKEN = "trial-operator-token-0123456789abcdef"
 BOAT_STATES = ("IDLE", "READY", "RUNNING", "HOLD", "DONE", "ABORTED", "FAILSAFE", "GO_AROUND")
@@ -230,7 +231,10 @@ class Judge:
         return float(x), float(y)
 
     def _others(self, rx: float, ry: float) -> list[tuple[float, float, float]]:
-        """(x, y, radius) in the ship-fixed ramp frame of every ship and obstacle now."""
+        """(x, y, radius) in the ship-fixed ramp frame of every ship and obstacle now: the
+        ships of the simulated sea, and the scenario's obstacles as charted hazards (fixed
+        over ground where the origin puts them at t = 0, moving with their own velocity),
+        as the station's world model keeps them."""
         t = self._sea_time()
         out = []
         sea = self.station.world.sea
@@ -238,9 +242,8 @@ class Judge:
             for ship, truth in zip(sea.model.traffic, sea.model.traffic_at(t), strict=True):
                 x, y = sea.model.frame0.enu_to_ramp(truth.east, truth.north)
                 out.append((float(x) - rx, float(y) - ry, ship.length / 2.0))
-        run_t = self.clock.now() - self.started_at if self.started_at is not None else 0.0
         for o in self.scenario.obstacles:
-            out.append((o.x + o.vx * run_t, o.y + o.vy * run_t, o.radius))
+            out.append((o.x + o.vx * t - rx, o.y + o.vy * t - ry, o.radius))
         return out
 
     def outcome(self) -> str:
@@ -284,7 +287,11 @@ class Operator:
         if await self._wait("/api/boat", lambda b: b["link"]["up"], 30.0) is None:
             self.notes.append("the link never came up")
             return None
-        r = await self.c.post("/api/plans", json={"planner": self.ep.planner, "seed": 1})
+        # planned against the live world, as the console offers: the ships on AIS and the
+        # scenario's obstacles where they are now, the ship's way as an apparent current
+        world = (await self.c.get("/api/world/scenario")).json()["scenario"]
+        r = await self.c.post("/api/plans", json={"planner": self.ep.planner, "seed": 1,
+                                                  "scenario": world})
         job = await self._wait(f"/api/plans/{r.json()['id']}",
                                lambda j: j["status"] not in ("queued", "running"), 120.0)
         if job is None or job["status"] != "done":
@@ -301,6 +308,10 @@ class Operator:
             self.notes.append(f"upload failed: {mission and mission['error']}")
             return None
         return mission["id"]
+
+    async def boat(self) -> dict[str, Any]:
+        """GET /api/boat: what the console shows of the boat."""
+        return (await self.c.get("/api/boat")).json()
 
     async def command(self, name: str, mission_id: str | None = None) -> bool:
         body: dict[str, Any] = {"command": name}
@@ -388,17 +399,19 @@ async def _episode(clock: SimClock, ep: Episode, folder: Path) -> dict[str, Any]
 async def _sail(clock: SimClock, station: Station, operator: Operator, judge: Judge,
                 ep: Episode) -> None:
     """From START until the boat ends its mission (or the time limit): the episode's scripted
-    events (current change, radio silence, HOLD) and the mate's re-plan confirmations."""
+    events (current change, radio silence, HOLD) and the mate's answers: confirm re-plans,
+    and RESUME a boat that stopped on its own (FAILSAFE, or HOLD on a stale ramp pose) once
+    the console shows the link up."""
     cond = ep.conditions
     t0 = clock.now()
     seen: dict[str, float] = {}
     current_changed = radio_off = held = resumed = False
+    resumed_at = -math.inf
     sim = station.sim
     assert sim is not None and hasattr(sim, "boat")
     while clock.now() - t0 < ep.time_limit_s:
         t = clock.now() - t0
-        state = judge.states[-1] if judge.states else "IDLE"
-        if state in ("DONE", "ABORTED", "IDLE"):
+        if judge.states and judge.states[-1] in ("DONE", "ABORTED", "IDLE"):
             return
         if not current_changed and cond.current != "steady" and t >= cond.current_change_s:
             current_changed = True
@@ -409,14 +422,19 @@ async def _sail(clock: SimClock, station: Station, operator: Operator, judge: Ju
             if off_now != radio_off:
                 radio_off = off_now
                 sim.radio.enabled = sim.uplink.enabled = not off_now
+        holding_on_purpose = False
         if cond.operator_hold is not None:
             at, length = cond.operator_hold
+            holding_on_purpose = held and not resumed
             if not held and t >= at:
-                held = await operator.command("hold")
+                held = holding_on_purpose = await operator.command("hold")
             elif held and not resumed and t >= at + length:
                 resumed = await operator.command("resume")
-        if state == "FAILSAFE" and not radio_off and t > 0:
-            # the link is back: the mate resumes once, as the console offers
+        boat = await operator.boat()
+        state = boat["boat"]["state"] if boat["boat"] else None
+        if state in ("HOLD", "FAILSAFE") and boat["link"]["up"] and not holding_on_purpose \
+                and clock.now() - resumed_at >= RESUME_EVERY_S:
+            resumed_at = clock.now()
             await operator.command("resume")
         if ep.replan == "confirm":
             await operator.confirm_replans(seen)
