@@ -10,7 +10,9 @@ entry points reads the wall clock or sleeps directly (a ruff rule enforces it).
   thread, it jumps straight to its next timer instead of waiting. A whole recovery then
   runs as fast as the CPU allows, and the same every time: its order of events depends
   only on the timers, never on how busy the machine is. Work handed to a thread
-  (`asyncio.to_thread`, `run_in_executor`) freezes the virtual time until it is done.
+  (`asyncio.to_thread`, `run_in_executor`) runs inline instead, at once: the virtual time
+  does not move and nothing else runs meanwhile (a real thread would finish at a moment
+  the machine's load decides, and so reorder what happens at one simulated instant).
   Real sockets or pipes are not watched for in simulated time: simulated parts talk over
   in-memory streams (`link.transport.MemoryPipe`).
 - `ManualClock`: a clock a test or a stepped bench advances by hand.
@@ -25,7 +27,6 @@ from __future__ import annotations
 import asyncio
 import datetime as dt
 import selectors
-import threading
 import time
 from collections.abc import Awaitable, Callable, Coroutine
 from concurrent.futures import Executor
@@ -34,7 +35,7 @@ from typing import Any, Protocol, TypeVar
 T = TypeVar("T")
 
 SIM_EPOCH = 1_767_225_600.0  # 2026-01-01T00:00:00Z: the default unix time of simulated t = 0
-THREAD_POLL_S = 0.05  # how often a frozen virtual clock re-checks its threads (real time)
+IDLE_POLL_S = 0.05  # real time a virtual loop with no timer waits for real I/O
 
 
 class Clock(Protocol):
@@ -151,16 +152,12 @@ class _VirtualSelector(selectors.BaseSelector):
         self._real.close()
 
     def select(self, timeout: float | None = None):  # type: ignore[no-untyped-def]
-        loop = self._loop
-        if loop.threads_running:  # the clock stands still until the thread is done
-            wait = THREAD_POLL_S if timeout is None else min(timeout, THREAD_POLL_S)
-            return self._real.select(wait)
         events = self._real.select(0)
         if events or timeout == 0:
             return events
-        if timeout is None:  # nothing scheduled: only a thread or real I/O can wake us
-            return self._real.select(THREAD_POLL_S)
-        loop.advance(timeout)
+        if timeout is None:  # nothing scheduled: only real I/O (or another thread) can wake us
+            return self._real.select(IDLE_POLL_S)
+        self._loop.advance(timeout)
         return []
 
 
@@ -169,8 +166,6 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
 
     def __init__(self, start: float = 0.0) -> None:
         self._virtual_time = float(start)
-        self.threads_running = 0
-        self._threads_lock = threading.Lock()
         super().__init__(selectors.DefaultSelector())
         self._selector = _VirtualSelector(self, self._selector)
 
@@ -184,15 +179,14 @@ class VirtualTimeLoop(asyncio.SelectorEventLoop):
 
     def run_in_executor(self, executor: Executor | None, func: Callable[..., T],
                         *args: Any) -> asyncio.Future[T]:
-        fut = super().run_in_executor(executor, func, *args)
-        with self._threads_lock:
-            self.threads_running += 1
-        fut.add_done_callback(self._thread_done)
+        """`func(*args)` at once, on this thread: the result is the same whatever the machine
+        is doing (see the module's docstring)."""
+        fut: asyncio.Future[T] = self.create_future()
+        try:
+            fut.set_result(func(*args))
+        except Exception as exc:  # handed to the awaiting coroutine, as a thread's would be
+            fut.set_exception(exc)
         return fut
-
-    def _thread_done(self, _: asyncio.Future) -> None:
-        with self._threads_lock:
-            self.threads_running -= 1
 
 
 class SimClock:

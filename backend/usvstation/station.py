@@ -5,6 +5,7 @@ from __future__ import annotations
 import asyncio
 import json
 import logging
+import random
 from collections import deque
 from collections.abc import Callable
 
@@ -82,8 +83,11 @@ class Station:
     feeds the world directly, and the 3D view's server is not started."""
 
     def __init__(self, settings: Settings, clock: Clock = REAL_CLOCK, *,
-                 in_process: bool = False, scenario: Scenario | None = None) -> None:
+                 in_process: bool = False, scenario: Scenario | None = None,
+                 entropy: random.Random | None = None) -> None:
         self.settings, self.clock, self.in_process = settings, clock, in_process
+        # ids and sessions: unpredictable by default; seeded in simulated time (a trial)
+        self.entropy = entropy or random.SystemRandom()
         self._initial_scenario = scenario  # becomes the working scenario at start
         self.token = resolve_token(settings)
         viewer = settings.viewer_token
@@ -100,7 +104,8 @@ class Station:
         self.lag = LoopLagMonitor(clock)
         self._watch: asyncio.Task | None = None
         self.started = self.stopped = False
-        self.boat = BoatService(settings, self.store, self.hub, self.plans, clock=clock)
+        self.boat = BoatService(settings, self.store, self.hub, self.plans, clock=clock,
+                                entropy=self.entropy)
         self.sim: EmbeddedSim | InProcessSim | None = None
         self.hub.observers.append(ThreeDFeed(self.view, self._plan_of_mission).on_event)
         self.world = WorldService(self.hub, settings.nmea, simulate=settings.link == "sim",
@@ -138,7 +143,7 @@ class Station:
         device = factory = None
         if self.settings.link == "sim" and self.in_process:  # on this loop, in memory
             self.sim = InProcessSim(scenario, self.settings, self.boat.key, self.clock,
-                                    self.sim_vehicle)
+                                    self.sim_vehicle, boot_id=self.entropy.getrandbits(32))
             self.sim.start()
             device, factory = "memory", self.sim.station_stream
         elif self.settings.link == "sim":  # the embedded simulated boat on a pty

@@ -5,6 +5,7 @@ no real waits (docs/design.md "Clock")."""
 from __future__ import annotations
 
 import inspect
+import random
 from collections.abc import Awaitable, Callable
 from pathlib import Path
 from typing import Any, TypeVar
@@ -86,7 +87,8 @@ def run_station(data_dir: Path, body: Callable[[SimStation], Awaitable[T]], *,
 
     async def main(clock: SimClock) -> T:
         station = Station(Settings(data_dir=data_dir, token=TOKEN, link="sim", nmea=[],
-                                   **settings), clock, in_process=True, scenario=scenario)
+                                   **settings), clock, in_process=True, scenario=scenario,
+                          entropy=random.Random(0))
         await station.start()
         try:
             transport = httpx.ASGITransport(app=create_app(station))

@@ -1,5 +1,5 @@
-"""The clock: simulated time jumps to the next timer, stands still while a thread works,
-and orders events by their simulated instants alone."""
+"""The clock: simulated time jumps to the next timer, stands still while work handed to a
+thread runs (inline, at once), and orders events by their simulated instants alone."""
 
 from __future__ import annotations
 
@@ -39,7 +39,7 @@ def test_tasks_wake_in_the_order_of_their_simulated_instants(plans):
     assert end == pytest.approx(max(sum(p) for p in plans), rel=1e-9)
 
 
-def test_time_stands_still_while_a_thread_works():
+def test_time_stands_still_while_work_handed_to_a_thread_runs():
     started = threading.Event()
 
     async def main(clock: SimClock) -> tuple[float, float, int]:
@@ -60,6 +60,9 @@ def test_time_stands_still_while_a_thread_works():
             threading.Event().wait(0.2)  # 0.2 s of real work
 
         await asyncio.to_thread(work)
+        assert await asyncio.to_thread(lambda: 7) == 7
+        with pytest.raises(ZeroDivisionError):
+            await asyncio.to_thread(lambda: 1 / 0)
         after = clock.now()
         task.cancel()
         return before, after, ticks - ticks_before

@@ -15,7 +15,7 @@ Safety rules kept here (the boat keeps its own, protocol/README.md):
 from __future__ import annotations
 
 import asyncio
-import secrets
+import random
 import uuid
 from collections.abc import Awaitable, Callable, Coroutine
 
@@ -59,9 +59,13 @@ class BoatService:
     """Missions, commands and runs; the link and the simulated boat are its parts."""
 
     def __init__(self, settings: Settings, store: Store, hub: LiveHub, plans: PlanService, *,
-                 stream_factory: StreamFactory | None = None, clock: Clock = REAL_CLOCK) -> None:
+                 stream_factory: StreamFactory | None = None, clock: Clock = REAL_CLOCK,
+                 entropy: random.Random | None = None) -> None:
         self.settings, self.store, self.hub, self.plans = settings, store, hub, plans
         self.clock = clock
+        # mission wire ids and the link's session: unpredictable (SystemRandom), or seeded
+        # for a station in simulated time, whose runs are then the same every time
+        self.entropy = entropy or random.SystemRandom()
         self.key = resolve_link_key(settings)
         self._stream_factory = stream_factory  # tests: an injected link
         self.simulated = False  # the embedded simulated boat is on the far end
@@ -93,7 +97,7 @@ class BoatService:
         config = LinkConfig(boat_id=self.settings.boat_id, station_id=self.settings.station_id,
                             baud=baud, link_timeout_s=self.settings.heartbeat_timeout_s)
         link = BoatLink(device, baud=baud, stream_factory=factory, config=config, key=self.key,
-                        clock=self.clock)
+                        clock=self.clock, session=self.entropy.randrange(1, 1 << 24))
         self.handler = LinkHandler(link, device, self.store, self.hub,
                                    self._on_report, self._on_reboot)
         self.runs.handler = self.handler
@@ -168,7 +172,7 @@ class BoatService:
         elif swap_at_ms is None:
             swap_at_ms = self._swap_instant(link)
         frame = RampFrame(origin["lat"], origin["lon"], origin["ramp_bearing_deg"])
-        wire_id = secrets.randbits(32) or 1
+        wire_id = self.entropy.getrandbits(32) or 1
         try:
             mission = mission_from_plan(job["plan"]["waypoints"], frame, wire_id)
         except MissionError as exc:

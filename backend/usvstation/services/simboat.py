@@ -68,9 +68,10 @@ class EmbeddedSim:
 
 
 def build_boat(scenario: Scenario, settings: Settings, key: bytes | None, clock: Clock,
-               vehicle: Vehicle | None = None) -> BoatProtocol:
+               vehicle: Vehicle | None = None, boot_id: int | None = None) -> BoatProtocol:
     """The simulated boat of the station's settings at the scenario's start, on `clock`;
-    `vehicle` default: the dynamic Otter of sim/runner.py `make_vehicle`."""
+    `vehicle` default: the dynamic Otter of sim/runner.py `make_vehicle`; `boot_id`
+    default: drawn at random by the boat."""
     o = scenario.origin
     assert o is not None, "the station gives the working scenario an origin first"
     frame = RampFrame(o.lat, o.lon, o.ramp_bearing_deg)
@@ -81,7 +82,7 @@ def build_boat(scenario: Scenario, settings: Settings, key: bytes | None, clock:
     return make_boat(frame, config=config, key=key, gnss_error=s.sim_gnss_error,
                      vehicle=vehicle or make_vehicle(
                          "dynamic", scenario, sensors="rtk" if s.sim_gnss_error else "exact"),
-                     x=scenario.start.x, y=scenario.start.y, clock=clock)
+                     x=scenario.start.x, y=scenario.start.y, clock=clock, boot_id=boot_id)
 
 
 class InProcessSim:
@@ -90,10 +91,11 @@ class InProcessSim:
     `radio.enabled = False` for a link-loss burst), `uplink` the station's."""
 
     def __init__(self, scenario: Scenario, settings: Settings, key: bytes | None, clock: Clock,
-                 vehicle: Callable[[Scenario], Vehicle] | None = None) -> None:
+                 vehicle: Callable[[Scenario], Vehicle] | None = None,
+                 boot_id: int | None = None) -> None:
         self.clock = clock
         self.boat = build_boat(scenario, settings, key, clock,
-                               vehicle(scenario) if vehicle is not None else None)
+                               vehicle(scenario) if vehicle is not None else None, boot_id)
         self.pipe = MemoryPipe()
         self._stop = asyncio.Event()
         self._task: asyncio.Task | None = None

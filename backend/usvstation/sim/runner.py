@@ -125,7 +125,8 @@ def save_nv(path: Path, nv: NonVolatile) -> None:
 def make_boat(frame: RampFrame, *, x: float = 85.0, y: float = 10.0, heading_deg: float = 180.0,
               config: BoatConfig | None = None, seed: int = 0, key: bytes | None = None,
               vehicle: Vehicle | None = None, nv: NonVolatile | None = None,
-              gnss_error: bool = True, clock: Clock = REAL_CLOCK) -> BoatProtocol:
+              gnss_error: bool = True, clock: Clock = REAL_CLOCK,
+              boot_id: int | None = None) -> BoatProtocol:
     """A simulated boat at ramp-frame (x, y) with a KinematicVehicle unless one is given;
     signing with `key` (None: unsigned, --insecure-link), its time from `clock`;
     `gnss_error` False: a KinematicVehicle's fixes report its exact position (a vehicle
@@ -133,7 +134,7 @@ def make_boat(frame: RampFrame, *, x: float = 85.0, y: float = 10.0, heading_deg
     vehicle = vehicle or KinematicVehicle(x, y, math.radians(heading_deg))
     gps = GpsNoise(seed=seed) if gnss_error else GpsNoise(bias_std_m=0.0, white_std_m=0.0)
     return BoatProtocol(vehicle, frame, config or BoatConfig(), key=key, nv=nv,
-                        gps=gps, now=clock.now(), unix_time=clock.unix())
+                        gps=gps, now=clock.now(), unix_time=clock.unix(), boot_id=boot_id)
 
 
 async def serve_on_url(boat: BoatProtocol, url: str, baud: int, *,

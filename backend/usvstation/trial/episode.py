@@ -18,6 +18,7 @@ the truth (the boat's true hull, the ships, the ramp) and decides the outcome:
 from __future__ import annotations
 
 import math
+import random
 import shutil
 import tempfile
 from dataclasses import asdict, dataclass, field, replace
@@ -360,7 +361,8 @@ async def _episode(clock: SimClock, ep: Episode, folder: Path) -> dict[str, Any]
     scenario = Scenario(**ep.scenario)
     settings = Settings(data_dir=folder, token=TOKEN, replan=ep.replan, link="sim",
                         nmea=[])
-    station = Station(settings, clock, in_process=True, scenario=scenario)
+    station = Station(settings, clock, in_process=True, scenario=scenario,
+                      entropy=random.Random(f"{ep.key}"))
     hull = HullMismatch(cond.drag_scale, cond.thrust_scale)
     station.sim_vehicle = lambda sc: make_vehicle(
         "dynamic", sc, sea_state=cond.sea_state, sensors=cond.sensor, hull=hull,
