@@ -15,6 +15,8 @@ extern const uint8_t __usv_config_page[]; /* the linker scripts' two reserved pa
 extern const uint8_t __usv_nv_page[];
 
 volatile uint32_t board_ms;
+static uint32_t tick_milli = 1000u; /* boat ms x 1000 a SysTick (1000 at sea) */
+static uint32_t tick_acc;
 
 static uint32_t sysclk_hz = 8000000u; /* HSI after reset */
 static uint32_t pclk1_hz = 8000000u;
@@ -22,9 +24,13 @@ static uint32_t pclk2_hz = 8000000u;
 
 void SysTick_Handler(void);
 
+/* 1 kHz: one boat millisecond a tick at sea, speedup_milli / 1000 of them in a
+ * hardware-in-the-loop run that runs the boat's clock faster */
 void SysTick_Handler(void)
 {
-    board_ms++;
+    tick_acc += tick_milli;
+    board_ms += tick_acc / 1000u;
+    tick_acc %= 1000u;
 }
 
 #ifdef USV_BOARD_QEMU
@@ -98,7 +104,8 @@ void board_init(uint32_t speedup_milli)
     pwm_init(TIM3_BASE);
     uart_init(USART1_BASE, pclk2_hz, BOARD_RADIO_BAUD);
     uart_init(USART2_BASE, pclk1_hz, BOARD_HIL_BAUD);
-    SYST_RVR = (uint32_t)((uint64_t)sysclk_hz / speedup_milli) - 1u; /* a boat millisecond */
+    tick_milli = speedup_milli;
+    SYST_RVR = sysclk_hz / 1000u - 1u;
     SYST_CVR = 0u;
     SYST_CSR = SYST_CSR_CLKSOURCE | SYST_CSR_TICKINT | SYST_CSR_ENABLE;
 }

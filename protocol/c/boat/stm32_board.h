@@ -14,8 +14,8 @@
 #define BOARD_RADIO_BAUD 57600u /* USART1: the radio (SiK-class modem) */
 #define BOARD_HIL_BAUD 115200u  /* USART2: navigation in, thrust out */
 
-/* Boat milliseconds since reset: one SysTick a boat millisecond (speedup_milli / 1000 of
- * them a wall-clock millisecond; 1000 on a boat at sea). */
+/* Boat milliseconds since reset, advanced by the 1 kHz SysTick: one a tick at sea,
+ * speedup_milli / 1000 a tick when a hardware-in-the-loop run speeds the boat's clock up. */
 extern volatile uint32_t board_ms;
 
 /* Clocks, pins, USART1/USART2 (receive interrupts still off), PWM at neutral, SysTick. */
