@@ -372,6 +372,9 @@ def _add_hil_parser(sub: Any) -> None:
     hil.add_argument("--start-radius", type=float, default=10.0,
                      help="START refused farther than this from waypoint 0, m (default 10)")
     hil.add_argument("--seed", type=int, default=0, help="GPS noise seed")
+    hil.add_argument("--no-gnss-time", action="store_true",
+                     help="the GNSS gives no UTC: the boat's replay floor comes from its "
+                     "flash page alone")
     hil.add_argument("--nv-file", type=Path, metavar="PATH",
                      help="the chip's signing-floor flash page image, kept across runs "
                      "(default: a file that lives as long as this run)")
@@ -410,7 +413,7 @@ def _cmd_hil(args: argparse.Namespace) -> int:
         scenario = load_scenario(args.scenario)
         key = read_key(args.link_key) if args.link_key is not None else None
         bridge = HilBridge.for_scenario(scenario, GpsNoise(seed=args.seed), boat_id=args.boat_id,
-                                        key=key)
+                                        key=key, gnss_time=not args.no_gnss_time)
         provision = Provision(
             boat_id=args.boat_id, station_id=args.station_id, key=key,
             telemetry_period_ms=round(1000 / args.telemetry_hz),

@@ -57,12 +57,16 @@ class HilBridge:
     """The vessel model on one side, the firmware's HIL link on the other (bytes in, out)."""
 
     def __init__(self, vessel: Vessel, env: Environment, frame: RampFrame, gps: PositionError,
-                 *, boat_id: int = wire.BOAT_ID, key: bytes | None = None) -> None:
+                 *, boat_id: int = wire.BOAT_ID, key: bytes | None = None,
+                 gnss_time: bool = True) -> None:
+        """`gnss_time` False: the receiver has no UTC (HIL_GPS carries the firmware's own
+        time since boot), so the boat's replay floor comes from its flash page alone."""
         self.vessel = vessel
         self.env = env
         self.frame = frame
         self.gps = gps
         self.boat_id = boat_id
+        self.gnss_time = gnss_time
         self.codec = wire.Codec(boat_id, GNSS_COMPONENT, key)
         self.stats = BridgeStats()
         self._t: float | None = None  # firmware time of the last control (s)
@@ -71,7 +75,7 @@ class HilBridge:
 
     @classmethod
     def for_scenario(cls, scenario: Any, gps: PositionError, *, boat_id: int = wire.BOAT_ID,
-                     key: bytes | None = None) -> HilBridge:
+                     key: bytes | None = None, gnss_time: bool = True) -> HilBridge:
         """The Otter at rest at the scenario's start pose, in its current and wind, the ramp
         frame fixed at its origin (ValueError without an origin)."""
         if scenario.origin is None:
@@ -79,7 +83,8 @@ class HilBridge:
         o, start = scenario.origin, scenario.start
         vessel = Vessel(otter(), VesselState(start.x, start.y, math.radians(start.heading_deg)))
         return cls(vessel, Environment.from_scenario(scenario.environment),
-                   RampFrame(o.lat, o.lon, o.ramp_bearing_deg), gps, boat_id=boat_id, key=key)
+                   RampFrame(o.lat, o.lon, o.ramp_bearing_deg), gps, boat_id=boat_id, key=key,
+                   gnss_time=gnss_time)
 
     @property
     def truth(self) -> VesselState:
@@ -130,8 +135,9 @@ class HilBridge:
         speed = s.speed
         vn, ve = speed * math.cos(math.radians(cog)), speed * math.sin(math.radians(cog))
         gps = self.gps
+        stamp = unix_time if self.gnss_time else t  # UTC, or time since boot without it
         msg = self.codec.mav.hil_gps_encode(
-            int(unix_time * 1e6), gps.fix_type, round(float(lat) * 1e7), round(float(lon) * 1e7),
+            int(stamp * 1e6), gps.fix_type, round(float(lat) * 1e7), round(float(lon) * 1e7),
             0, min(round(gps.hdop * 100), 0xFFFE), 0xFFFF, min(round(speed * 100), 0xFFFE),
             _cm(vn), _cm(ve), 0, round(cog * 100) % 36000, gps.satellites, 0,
             round(hdg * 100) % 36000 or 36000)  # yaw: 0 means unknown, north is 36000
