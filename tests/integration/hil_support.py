@@ -77,6 +77,36 @@ def conformance_argv() -> dict[str, list[str]]:
                      "--seed", "1", "--image", str(session_image())]}
 
 
+STACK_PAINT = b"\xa5\xa5\xa5\xa5"  # startup_m3.c paints the free RAM with it
+
+
+def stack_high_water(monitor: Path, image: Path, dump: Path, timeout: float = 30.0
+                     ) -> tuple[int, int]:
+    """(bytes of stack ever used, bytes below them never touched) of the firmware in QEMU,
+    from a RAM image that QEMU's monitor writes (pmemsave) and the image's symbols."""
+    import socket
+
+    syms = {}
+    for line in subprocess.run(["arm-none-eabi-nm", str(image)], capture_output=True,
+                               text=True, check=True).stdout.splitlines():
+        parts = line.split()
+        if len(parts) == 3:
+            syms[parts[2]] = int(parts[0], 16)
+    ram0, ebss, estack = 0x20000000, syms["_ebss"], syms["_estack"]
+    with socket.socket(socket.AF_UNIX) as s:
+        s.connect(str(monitor))
+        s.sendall(f'pmemsave {ram0:#x} {estack - ram0} "{dump}"\n'.encode())
+        deadline = time.monotonic() + timeout
+        while not (dump.is_file() and dump.stat().st_size == estack - ram0):
+            assert time.monotonic() < deadline, "QEMU's monitor wrote no RAM image"
+            time.sleep(0.05)
+    ram = dump.read_bytes()
+    at = ebss - ram0
+    while ram[at:at + 4] == STACK_PAINT:
+        at += 4
+    return estack - ram0 - at, at - (ebss - ram0)
+
+
 class HilProcess:
     """`usv-station hil` as a child; `where` is what it announced (127.0.0.1:PORT or a pty).
     Its stderr is collected in `log`. Always end it with `close()`."""

@@ -14,7 +14,7 @@ import itertools
 import math
 import time
 
-from hil_support import HilProcess, require_qemu, session_image
+from hil_support import HilProcess, require_qemu, session_image, stack_high_water
 from stationproc import StationProcess
 
 SIM_SPEED = 4.0
@@ -54,8 +54,10 @@ def test_serve_flies_the_firmware_in_qemu_then_hold_and_abort_act_and_the_run_is
     t0 = time.monotonic()
     hil = st = None
     try:
+        monitor = tmp_path / "qemu-monitor.sock"
         hil = HilProcess("--port", "0", "--scenario", "case1", "--link-key", str(key),
-                         "--sim-speed", str(SIM_SPEED), "--image", str(image))
+                         "--sim-speed", str(SIM_SPEED), "--image", str(image),
+                         "--qemu-monitor", str(monitor))
         st = StationProcess(tmp_path / "data", "--link", f"socket://127.0.0.1:{hil.port}",
                             "--link-key", str(key), "--boat-id", "1")
         boat = st.wait_link_up(120)
@@ -97,6 +99,7 @@ def test_serve_flies_the_firmware_in_qemu_then_hold_and_abort_act_and_the_run_is
         runs = st.client.get("/api/runs").json()
         rows = st.client.get("/api/telemetry", params={"run": run_id}).json()
         boat = st.client.get("/api/boat").json()
+        used, spare = stack_high_water(monitor, image, tmp_path / "ram.bin")
     finally:
         if st is not None:
             st.stop()
@@ -115,3 +118,6 @@ def test_serve_flies_the_firmware_in_qemu_then_hold_and_abort_act_and_the_run_is
     print(f"largest distance from the planned path while RUNNING: {off_path:.1f} m")
     assert off_path < 8.0
     assert moving[-1]["x"] < x0 - MOVED_M
+    # the 8 KB chip's stack after a whole session (upload, readback, commands, telemetry)
+    print(f"QEMU firmware stack: {used} B used at most, {spare} B never touched")
+    assert spare >= 256
