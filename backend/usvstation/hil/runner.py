@@ -12,6 +12,7 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import ctypes
+import os
 import signal
 import tempfile
 from collections.abc import Awaitable, Callable
@@ -58,35 +59,44 @@ async def run_hil(run: HilRun, bridge: HilBridge, *, unix_time: Callable[[], flo
             k: asyncio.get_running_loop().create_future() for k in ("radio", "hil")}
         servers = [await asyncio.start_unix_server(_accept_once(links[k]), path=str(p))
                    for k, p in (("radio", qemu.radio_socket), ("hil", qemu.hil_socket))]
-        proc = await asyncio.create_subprocess_exec(
-            *qemu.argv(), stdin=asyncio.subprocess.DEVNULL,
-            stdout=asyncio.subprocess.PIPE, stderr=asyncio.subprocess.STDOUT,
-            preexec_fn=_die_with_parent)
+        side = await _StationSide.open(run.port)  # a port in use fails before QEMU starts
         try:
-            qemu_out = asyncio.create_task(_lines(proc.stdout, lambda s: log(f"qemu: {s}")))
-            await _connected(links, proc)
-            radio_r, radio_w = links["radio"].result()
-            hil_r, hil_w = links["hil"].result()
-            side = await _StationSide.open(run.port, radio_w)
-            announce(side.where)
-            tasks = {
-                asyncio.create_task(_bridge(hil_r, hil_w, bridge, unix_time)): "HIL link closed",
-                asyncio.create_task(side.from_boat(radio_r)): "radio link closed",
-                asyncio.create_task(proc.wait()): "QEMU exited",
-                asyncio.create_task(stop.wait()): "stopped",
-            }
-            try:
-                done, _ = await asyncio.wait(tasks, return_when=asyncio.FIRST_COMPLETED)
-                return tasks[next(iter(done))]
-            finally:
-                for t in tasks:
-                    t.cancel()
-                await side.close()
-                qemu_out.cancel()
+            return await _run_qemu(qemu, links, side, bridge, unix_time, announce, log, stop)
         finally:
-            await _end(proc)
+            await side.close()
             for s in servers:
                 s.close()
+
+
+async def _run_qemu(qemu: QemuCommand, links: dict[str, asyncio.Future], side: _StationSide,
+                    bridge: HilBridge, unix_time: Callable[[], float],
+                    announce: Callable[[str], None], log: Callable[[str], None],
+                    stop: asyncio.Event) -> str:
+    proc = await asyncio.create_subprocess_exec(
+        *qemu.argv(), stdin=asyncio.subprocess.DEVNULL,
+        stdout=asyncio.subprocess.PIPE, stderr=asyncio.subprocess.STDOUT,
+        preexec_fn=_die_with_parent)
+    try:
+        qemu_out = asyncio.create_task(_lines(proc.stdout, lambda s: log(f"qemu: {s}")))
+        await _connected(links, proc)
+        radio_r, side.to_boat = links["radio"].result()
+        hil_r, hil_w = links["hil"].result()
+        announce(side.where)
+        tasks = {
+            asyncio.create_task(_bridge(hil_r, hil_w, bridge, unix_time)): "HIL link closed",
+            asyncio.create_task(side.from_boat(radio_r)): "radio link closed",
+            asyncio.create_task(proc.wait()): "QEMU exited",
+            asyncio.create_task(stop.wait()): "stopped",
+        }
+        try:
+            done, _ = await asyncio.wait(tasks, return_when=asyncio.FIRST_COMPLETED)
+            return tasks[next(iter(done))]
+        finally:
+            for t in tasks:
+                t.cancel()
+            qemu_out.cancel()
+    finally:
+        await _end(proc)
 
 
 def _accept_once(slot: asyncio.Future) -> Callable[..., Awaitable[None]]:
@@ -153,8 +163,8 @@ def _die_with_parent() -> None:
 class _StationSide:
     """The station's end of the radio: a TCP port on 127.0.0.1 or a new pty."""
 
-    def __init__(self, to_boat: asyncio.StreamWriter) -> None:
-        self.to_boat = to_boat
+    def __init__(self) -> None:
+        self.to_boat: asyncio.StreamWriter | None = None  # QEMU's USART1, once connected
         self.where = ""
         self.server: asyncio.Server | None = None
         self.client: asyncio.StreamWriter | None = None
@@ -163,8 +173,8 @@ class _StationSide:
         self._pty_task: asyncio.Task | None = None
 
     @classmethod
-    async def open(cls, port: int | None, to_boat: asyncio.StreamWriter) -> _StationSide:
-        side = cls(to_boat)
+    async def open(cls, port: int | None) -> _StationSide:
+        side = cls()
         if port is None:
             side.pty = PtyPair()
             stream = side.pty.master_stream()
@@ -175,7 +185,8 @@ class _StationSide:
         try:
             side.server = await asyncio.start_server(side._on_client, "127.0.0.1", port)
         except OSError as exc:
-            raise HilError(f"cannot listen on 127.0.0.1:{port}: {exc.strerror}") from None
+            why = os.strerror(exc.errno) if exc.errno else str(exc)
+            raise HilError(f"cannot listen on 127.0.0.1:{port}: {why}") from None
         bound = side.server.sockets[0].getsockname()[1]
         side.where = f"127.0.0.1:{bound}"
         return side
@@ -187,8 +198,7 @@ class _StationSide:
             old.close()
         try:
             while data := await reader.read(4096):
-                self.to_boat.write(data)
-                await self.to_boat.drain()
+                await self._to_boat(data)
         except (ConnectionError, OSError):
             pass
         finally:
@@ -198,6 +208,10 @@ class _StationSide:
 
     async def _pump_pty(self, stream: FdStream) -> None:
         while data := await stream.read():
+            await self._to_boat(data)
+
+    async def _to_boat(self, data: bytes) -> None:
+        if self.to_boat is not None:  # before QEMU connected: into the air
             self.to_boat.write(data)
             await self.to_boat.drain()
 
