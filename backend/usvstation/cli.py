@@ -422,6 +422,8 @@ def _cmd_hil(args: argparse.Namespace) -> int:
             nv_path=str(args.nv_file.resolve()) if args.nv_file is not None else "")
         provision.to_bytes()
         image = args.image if args.image is not None else build_image()
+        if not image.is_file():
+            raise ValueError(f"--image {image}: no such file")
     except ScenarioError as exc:
         raise CliError(f"invalid scenario: {exc}", EXIT_INVALID) from None
     except OSError as exc:
@@ -455,7 +457,7 @@ def _cmd_hil(args: argparse.Namespace) -> int:
     st = bridge.stats
     log(f"{why}: firmware time {st.firmware_time_s:.1f} s, {st.fixes} fixes, "
         f"{st.resets} resets, refused {dict(st.refused) or 0}")
-    return EXIT_OK
+    return EXIT_OK if why == "stopped" else EXIT_ERROR  # QEMU or a UART ended on its own
 
 
 def _cmd_link_key(args: argparse.Namespace) -> int:

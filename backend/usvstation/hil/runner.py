@@ -110,21 +110,23 @@ def _accept_once(slot: asyncio.Future) -> Callable[..., Awaitable[None]]:
 
 
 async def _connected(links: dict[str, asyncio.Future], proc: asyncio.subprocess.Process) -> None:
+    """Wait for QEMU to connect both UARTs; HilError if it exits or takes too long."""
     exited = asyncio.ensure_future(proc.wait())
+    pending = set(links.values())
     try:
-        done, _ = await asyncio.wait([*links.values(), exited], timeout=CONNECT_TIMEOUT_S,
-                                     return_when=asyncio.FIRST_COMPLETED)
-        while not all(f.done() for f in links.values()) and not exited.done() and done:
-            done, _ = await asyncio.wait([f for f in links.values() if not f.done()] + [exited],
-                                         timeout=CONNECT_TIMEOUT_S,
-                                         return_when=asyncio.FIRST_COMPLETED)
-        if exited.done():
-            raise HilError(f"QEMU exited with status {proc.returncode} before the boat's UARTs "
-                           "connected (its output is above)")
-        if not all(f.done() for f in links.values()):
-            raise HilError(f"QEMU did not connect the boat's UARTs in {CONNECT_TIMEOUT_S:g} s")
+        async with asyncio.timeout(CONNECT_TIMEOUT_S):
+            while pending and not exited.done():
+                done, _ = await asyncio.wait(pending | {exited},
+                                             return_when=asyncio.FIRST_COMPLETED)
+                pending -= done
+    except TimeoutError:
+        raise HilError(f"QEMU did not connect the boat's UARTs in {CONNECT_TIMEOUT_S:g} s") \
+            from None
     finally:
         exited.cancel()
+    if pending:
+        raise HilError(f"QEMU exited with status {proc.returncode} before the boat's UARTs "
+                       "connected (its output is above)")
 
 
 async def _bridge(reader: asyncio.StreamReader, writer: asyncio.StreamWriter, bridge: HilBridge,
