@@ -131,6 +131,8 @@ def build_parser() -> argparse.ArgumentParser:
                      help="the boat's non-volatile memory (signing replay floor) across "
                      "restarts, like the STM32's flash")
 
+    _add_hil_parser(sub)
+
     link_key = sub.add_parser("link-key", help="manage usv-link signing keys")
     link_key_sub = link_key.add_subparsers(dest="key_command", required=True)
     key_new = link_key_sub.add_parser("new", help="write a new random 32-byte key (mode 0600)")
@@ -218,7 +220,7 @@ def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     try:
         command = {"serve": _cmd_serve, "plan": _cmd_plan, "bench": _cmd_bench,
-                   "sim": _cmd_sim, "link-key": _cmd_link_key,
+                   "sim": _cmd_sim, "hil": _cmd_hil, "link-key": _cmd_link_key,
                    "campaign": _cmd_campaign, "trial": _cmd_trial}.get(args.command)
         if command is not None:
             return command(args)
@@ -335,6 +337,128 @@ def _cmd_sim(args: argparse.Namespace) -> int:
         return asyncio.run(run_sim(args))
     except ValueError as exc:
         raise CliError(str(exc), EXIT_INVALID) from None
+
+
+def _add_hil_parser(sub: Any) -> None:
+    hil = sub.add_parser(
+        "hil", help="run the boat's firmware binary in QEMU against the vessel model",
+        description=(
+            "Hardware in the loop: the STM32 firmware (protocol/c/boat, built with `make qemu` "
+            "when needed) runs in QEMU's emulated Cortex-M3 (stm32vldiscovery); its "
+            "navigation and thrust go over USART2 as MAVLink HIL messages to the 3-DOF vessel "
+            "model in the scenario's current, and its radio (USART1) is served on a TCP port "
+            "on 127.0.0.1 or a new pty for `serve --link socket://127.0.0.1:PORT`."),
+    )
+    where = hil.add_mutually_exclusive_group(required=True)
+    where.add_argument("--port", type=int, help="serve the radio on this TCP port of 127.0.0.1 "
+                       "(0: any free port, printed)")
+    where.add_argument("--pty", action="store_true",
+                       help="serve the radio on a new pseudo-terminal (its device is printed)")
+    hil.add_argument("--scenario", default="case1",
+                     help="scenario file or bundled name: origin, start pose, current (case1)")
+    hil.add_argument("--link-key", type=Path, metavar="PATH",
+                     help="signing key file shared with the station (radio and HIL frames)")
+    hil.add_argument("--insecure-link", action="store_true",
+                     help="provision the boat without a key (unsigned link)")
+    hil.add_argument("--sim-speed", type=float, default=1.0,
+                     help="the firmware's clock runs this many times the wall clock, 0.1-20 "
+                     "(its link timeouts stay in wall time; default 1)")
+    hil.add_argument("--boat-id", type=int, default=1, help="boat system id (default 1)")
+    hil.add_argument("--station-id", type=int, default=255,
+                     help="system id of the paired station (default 255)")
+    hil.add_argument("--telemetry-hz", type=float, default=5.0,
+                     help="telemetry rate in boat time, 0.2-50 (default 5)")
+    hil.add_argument("--failsafe-s", type=float, default=3.0,
+                     help="hold station after this long without the station (default 3)")
+    hil.add_argument("--start-radius", type=float, default=10.0,
+                     help="START refused farther than this from waypoint 0, m (default 10)")
+    hil.add_argument("--seed", type=int, default=0, help="GPS noise seed")
+    hil.add_argument("--no-gnss-time", action="store_true",
+                     help="the GNSS gives no UTC: the boat's replay floor comes from its "
+                     "flash page alone")
+    hil.add_argument("--nv-file", type=Path, metavar="PATH",
+                     help="the chip's signing-floor flash page image, kept across runs "
+                     "(default: a file that lives as long as this run)")
+    hil.add_argument("--image", type=Path, metavar="ELF",
+                     help="firmware image (default: build protocol/c/boat/build/"
+                     "usv_boat_qemu.elf)")
+    hil.add_argument("--qemu-monitor", type=Path, metavar="PATH",
+                     help="also serve QEMU's monitor on this Unix socket")
+    hil.add_argument("--duration", type=float, default=None,
+                     help="stop after this many seconds (default: run until interrupted)")
+
+
+def _cmd_hil(args: argparse.Namespace) -> int:
+    import asyncio
+    import signal
+    import time
+
+    from usvstation.hil.bridge import HilBridge
+    from usvstation.hil.provision import Provision
+    from usvstation.hil.qemu import MACHINE, ImageError, build_image
+    from usvstation.hil.runner import HilError, HilRun, run_hil
+    from usvstation.link.wire import read_key
+    from usvstation.scenario import ScenarioError, load_scenario
+    from usvstation.sim.sensors import GpsNoise
+
+    if args.port is not None and not 0 <= args.port <= 65535:
+        raise CliError(f"--port: {args.port} is not a TCP port", EXIT_INVALID)
+    if not 0.1 <= args.sim_speed <= 20:
+        raise CliError(f"--sim-speed: {args.sim_speed:g} outside 0.1..20", EXIT_INVALID)
+    if not 0.2 <= args.telemetry_hz <= 50:
+        raise CliError(f"--telemetry-hz: {args.telemetry_hz:g} outside 0.2..50", EXIT_INVALID)
+    if (args.link_key is None) == (not args.insecure_link):
+        raise CliError("the boat needs --link-key PATH (the station's key) or, knowingly, "
+                       "--insecure-link (not both)", EXIT_INVALID)
+    try:
+        scenario = load_scenario(args.scenario)
+        key = read_key(args.link_key) if args.link_key is not None else None
+        bridge = HilBridge.for_scenario(scenario, GpsNoise(seed=args.seed), boat_id=args.boat_id,
+                                        key=key, gnss_time=not args.no_gnss_time)
+        provision = Provision(
+            boat_id=args.boat_id, station_id=args.station_id, key=key,
+            telemetry_period_ms=round(1000 / args.telemetry_hz),
+            link_timeout_ms=round(args.failsafe_s * 1000), start_radius_m=args.start_radius,
+            max_speed_mps=bridge.vessel.params.top_speed, clock_speedup=args.sim_speed,
+            nv_path=str(args.nv_file.resolve()) if args.nv_file is not None else "")
+        provision.to_bytes()
+        image = args.image if args.image is not None else build_image()
+        if not image.is_file():
+            raise ValueError(f"--image {image}: no such file")
+    except ScenarioError as exc:
+        raise CliError(f"invalid scenario: {exc}", EXIT_INVALID) from None
+    except OSError as exc:
+        raise CliError(f"link key {args.link_key}: {exc.strerror}", EXIT_INVALID) from None
+    except (ValueError, ImageError) as exc:
+        raise CliError(str(exc), EXIT_INVALID) from None
+
+    def announce(where: str) -> None:
+        print(f"usv-station hil: boat {args.boat_id} on {where} (firmware {image} in QEMU "
+              f"{MACHINE}, {'signed' if key else 'UNSIGNED'}, sim speed {args.sim_speed:g}, "
+              f"start of {scenario.name})", flush=True)
+
+    def log(text: str) -> None:
+        print(f"usv-station hil: {text}", file=sys.stderr, flush=True)
+
+    async def main() -> str:
+        stop = asyncio.Event()
+        loop = asyncio.get_running_loop()
+        for sig in (signal.SIGINT, signal.SIGTERM):
+            loop.add_signal_handler(sig, stop.set)
+        if args.duration is not None:
+            loop.call_later(args.duration, stop.set)
+        return await run_hil(HilRun(image, provision, None if args.pty else args.port,
+                                    args.qemu_monitor), bridge, unix_time=time.time,
+                             announce=announce, log=log, stop=stop)
+
+    try:
+        why = asyncio.run(main())
+    except HilError as exc:
+        raise CliError(str(exc), EXIT_INVALID) from None
+    st = bridge.stats
+    log(f"{why}: firmware time {st.firmware_time_s:.1f} s, {st.fixes} fixes, "
+        f"{st.resets} resets, refused {dict(st.refused) or 0}")
+    return EXIT_OK if why == "stopped" else EXIT_ERROR  # QEMU or a UART ended on its own
 
 
 def _cmd_link_key(args: argparse.Namespace) -> int:

@@ -8,7 +8,9 @@ link on a new pseudo-terminal. The contract a boat command follows:
     device the station opens;
   - it places the boat at case1's start (ramp frame (85, 10), origin 30.5135 N 114.4182 E,
     ramp bearing 90) and follows timed waypoints (kinematic vehicle), at sim speed 1.
-The C boat (protocol/c/boat/, issue 11 item 8) adds itself to BOATS.
+The C boat (protocol/c/boat/, issue 11 item 8) adds itself to BOATS, and so does the same
+C boat as the firmware binary in QEMU's Cortex-M3 (`usv-station hil --pty`, issue 29): its
+vehicle is the 3-DOF Otter driven by the firmware's own thrust through the HIL bridge.
 """
 
 from __future__ import annotations
@@ -32,6 +34,10 @@ BOATS: dict[str, list[str]] = {
 from c_boat_support import conformance_argv  # noqa: E402
 
 BOATS.update(conformance_argv())
+# the firmware image in QEMU, built once per test session when the ARM tools exist
+from hil_support import conformance_argv as qemu_argv  # noqa: E402
+
+BOATS.update(qemu_argv())
 
 
 class BoatProcess:

@@ -52,9 +52,9 @@ class Radio:
             i = 0
             for size in wire.frame_lengths(self._buf):
                 chunk = bytes(self._buf[i:i + size])
-                if chunk[0] == mav.PROTOCOL_MARKER_V2 and len(chunk) >= 3 and \
-                        len(chunk) < 12 + chunk[1] + (13 if chunk[2] & 1 else 0):
-                    break  # incomplete: wait for the rest
+                if chunk[0] == mav.PROTOCOL_MARKER_V2 and (len(chunk) < 3 or len(chunk) < (
+                        12 + chunk[1] + (13 if chunk[2] & 1 else 0))):
+                    break  # incomplete (a serial line splits frames anywhere): wait for the rest
                 i += size
                 keep = i
                 if self.rng.random() < self.down_loss:
