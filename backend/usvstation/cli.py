@@ -10,6 +10,7 @@ import argparse
 import json
 import os
 import sys
+import time
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -70,8 +71,13 @@ def build_parser() -> argparse.ArgumentParser:
     plan.add_argument("--json", action="store_true", help="print the plan as JSON")
     plan.add_argument("--out", type=Path, help="also write the plan JSON to this file")
     plan.add_argument("--time-budget", type=float, default=None, metavar="S",
-                      help="wall-clock budget in seconds (planner.time_budget_s, default 5): "
-                      "past it the best valid plan so far, with a warning, or exit 3")
+                      help="wall-clock safety net of the command in seconds "
+                      "(planner.time_budget_s, default 5): past it the best valid plan so "
+                      "far, with a warning, or exit 3")
+    plan.add_argument("--max-evaluations", type=int, default=None, metavar="N",
+                      help="deterministic budget (planner.max_evaluations): candidate paths "
+                      "evaluated over all attempts; the plan does not depend on the "
+                      "machine's load (docs/planners.md \"Budget\")")
     plan.add_argument(
         "--set", dest="settings", action="append", default=[], type=_parse_setting,
         metavar="KEY=VALUE", help="override a planner option, e.g. --set population=120",
@@ -234,6 +240,9 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def _cmd_plan(args: argparse.Namespace) -> int:
+    # --time-budget counts the process's CPU time from here (planning/budget.py), so that the
+    # command, the planner's imports included, keeps within it
+    started = time.process_time()
     from pydantic import ValidationError
 
     from usvstation.scenario import ScenarioError, format_validation_error, load_scenario
@@ -243,6 +252,8 @@ def _cmd_plan(args: argparse.Namespace) -> int:
         overrides = dict(args.settings)
         if args.time_budget is not None:
             overrides["time_budget_s"] = args.time_budget
+        if args.max_evaluations is not None:
+            overrides["max_evaluations"] = args.max_evaluations
         if args.planner == "iga":
             scenario.planner_options(**overrides)
     except ScenarioError as exc:
@@ -254,7 +265,7 @@ def _cmd_plan(args: argparse.Namespace) -> int:
     from usvstation.planning.registry import PlannerOptionError, plan_with
 
     try:
-        plan = plan_with(scenario, args.planner, args.seed, **overrides)
+        plan = plan_with(scenario, args.planner, args.seed, started=started, **overrides)
     except PlannerOptionError as exc:
         raise CliError(f"invalid option: {exc}", EXIT_INVALID) from None
     except ScenarioError as exc:

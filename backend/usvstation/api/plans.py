@@ -38,6 +38,7 @@ async def post_plan(station: StationDep, req: PlanRequest | None = None) -> Acce
                                           handler and handler.run_t0)
         except ValueError as exc:
             raise HTTPException(409, detail=str(exc)) from None
+    scenario = scenario.with_budget(req.time_budget_s, req.max_evaluations)
     try:
         job = await station.plans.submit(scenario, req.planner, req.seed)
     except PlanQueueFull as exc:

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import math
-import time
 from dataclasses import replace
 from typing import Any
 
@@ -11,6 +10,7 @@ import numpy as np
 from scipy import ndimage
 
 from usvstation.geometry import inflated_radius
+from usvstation.planning.budget import Budget, Clock, cpu_clock
 from usvstation.planning.encoding import GeneLayout, InfeasibleProblem
 from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.planning.iga import IGAResult, run_iga
@@ -29,15 +29,20 @@ MIN_WATER_M = 0.05  # least water between hull and obstacle a plan may keep, m
 
 
 def plan_scenario(
-    scenario: Scenario, planner: str = "iga", seed: int | None = None, **overrides: Any
+    scenario: Scenario, planner: str = "iga", seed: int | None = None,
+    started: float | None = None, clock: Clock = cpu_clock, **overrides: Any,
 ) -> Plan:
     """Plan `scenario`; return the plan or raise NoFeasiblePlan.
 
     Every plan returned has passed the exact validator (`plan_violations`):
     true hull clearance, first turn, speed through the water, timing margin.
-    The run stops at `planner.time_budget_s` with the best valid plan so far.
-    A plan whose memory estimate exceeds the bound raises PlanTooLarge
-    (`limits.check_memory`) before anything large is allocated.
+    All attempts (clearance margins, run-outs) share one budget
+    (planning/budget.py): `planner.max_evaluations` decides where the search
+    stops; past the wall-clock safety net `planner.time_budget_s` (counted
+    from `started`, a `clock()` value, default now) the best valid plan
+    so far is returned with a warning. A plan whose memory estimate exceeds
+    the bound raises PlanTooLarge (`limits.check_memory`) before anything
+    large is allocated.
     """
     if planner not in PLANNERS:
         raise ValueError(f"planner: unknown planner {planner!r}; available: {', '.join(PLANNERS)}")
@@ -45,7 +50,7 @@ def plan_scenario(
         overrides["seed"] = seed
     opts = scenario.planner_options(**overrides)
     check_memory(scenario, opts)
-    deadline = time.perf_counter() + opts.time_budget_s
+    budget = Budget(opts.evaluation_budget, opts.time_budget_s, clock, started)
     first: tuple[Problem, IGAResult] | None = None
     reasons: list[str] = []
     direct = not needs_prefix(scenario, opts)
@@ -67,7 +72,7 @@ def plan_scenario(
                         f"eq. 7) cross every arrival within "
                         f"{math.degrees(math.atan(layout.cone_tan)):g} deg of the axis")
                     continue
-                result = run_iga(problem, opts, layout, deadline=deadline)
+                result = run_iga(problem, opts, layout, budget)
             except InfeasibleProblem as exc:
                 reasons.append(str(exc))
                 continue
@@ -79,19 +84,16 @@ def plan_scenario(
                     plan = plan.with_metrics(inflation_m=_r(margin), margin_kept=full)
                     if warning:  # the margin's warning comes first
                         plan = replace(plan, warnings=(warning, *plan.warnings))
-                    if result.stop_reason == "time_budget":
-                        plan = plan.warned(
-                            f"time budget of {opts.time_budget_s:g} s reached: best plan so far")
+                    if budget.time_fired:
+                        plan = plan.warned(budget.warning())
                     return plan
                 reasons.append("the exact check refused the best path: " + bad[0])
             first = first or (problem, result)
-            if time.perf_counter() > deadline:
+            if budget.exhausted():
                 break
-        if time.perf_counter() > deadline:
+        if budget.exhausted():
             break
-    head = "no feasible plan"
-    if time.perf_counter() > deadline:
-        head += f" within the time budget of {opts.time_budget_s:g} s"
+    head = "no feasible plan" + budget.failure()
     if first is None:
         raise NoFeasiblePlan(f"{head}: " + (reasons[0] if reasons else
                              "no collision-free way to turn the boat towards the goal"))

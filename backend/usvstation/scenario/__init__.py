@@ -152,6 +152,17 @@ class Scenario(BaseModel):
         base = self.planner.model_dump(exclude_unset=True) if self.planner else {}
         return IGAOptions(**{**base, **overrides})
 
+    def with_budget(self, time_budget_s: float | None = None,
+                    max_evaluations: int | None = None) -> Scenario:
+        """A copy whose `planner` section carries this budget (every planner honours it);
+        None keeps the scenario's own."""
+        given = {k: v for k, v in (("time_budget_s", time_budget_s),
+                                   ("max_evaluations", max_evaluations)) if v is not None}
+        if not given:
+            return self
+        base = self.planner.model_dump(exclude_unset=True) if self.planner else {}
+        return self.model_copy(update={"planner": IGAOptions(**{**base, **given})})
+
 
 def scenario_at(
     scenario: Scenario, x: float, y: float, heading_deg: float, speed: float, t: float

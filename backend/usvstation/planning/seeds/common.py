@@ -10,12 +10,13 @@ along the ramp axis, then asks the independent checker
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
 from usvstation.geometry import inflated_radius
+from usvstation.planning.budget import Budget
 from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.planning.model import Plan, PlanMetrics, Waypoint
 from usvstation.planning.validate import plan_violations
@@ -25,7 +26,12 @@ from usvstation.scenario import Scenario
 
 @dataclass(frozen=True)
 class World:
-    """Obstacle circles of a scenario (frame of the scenario) with a planning inflation."""
+    """Obstacle circles of a scenario (frame of the scenario) with a planning inflation.
+
+    A world that carries the plan's `budget` checks it on every collision query and raises
+    BudgetExhausted once it is spent (the planner catches it): so no seed planner runs past
+    its budget, whatever its own options say.
+    """
 
     cx: np.ndarray
     cy: np.ndarray
@@ -33,19 +39,36 @@ class World:
     vy: np.ndarray
     radius: np.ndarray
     inflated: np.ndarray
+    budget: Budget | None = field(default=None, compare=False, repr=False)
 
     @classmethod
-    def from_scenario(cls, scenario: Scenario, margin: float | None = None) -> World:
+    def from_scenario(cls, scenario: Scenario, margin: float | None = None,
+                      budget: Budget | None = None) -> World:
         """Circles inflated by `margin` (default paper 000 eq. 7: D_USV + R_c)."""
         v = scenario.vessel
         m = inflated_radius(0.0, v.length, v.compensation_radius) if margin is None else margin
         obs = scenario.obstacles
         arr = np.array([[o.x, o.y, o.vx, o.vy, o.radius] for o in obs], float).reshape(-1, 5)
-        return cls(arr[:, 0], arr[:, 1], arr[:, 2], arr[:, 3], arr[:, 4], arr[:, 4] + m)
+        return cls(arr[:, 0], arr[:, 1], arr[:, 2], arr[:, 3], arr[:, 4], arr[:, 4] + m, budget)
+
+    def spend(self, n: int) -> None:
+        """Count `n` evaluations against the budget (none without one)."""
+        if self.budget is not None:
+            self.budget.spend(n)
+
+    def check_budget(self) -> None:
+        """Raise BudgetExhausted when the budget is spent or its wall deadline passed."""
+        if self.budget is not None:
+            self.budget.check()
 
     @property
     def count(self) -> int:
         return int(self.cx.size)
+
+    def subset(self, keep: np.ndarray) -> World:
+        """The circles where `keep` is True (same budget)."""
+        return World(self.cx[keep], self.cy[keep], self.vx[keep], self.vy[keep],
+                     self.radius[keep], self.inflated[keep], self.budget)
 
     @property
     def moving(self) -> np.ndarray:
@@ -82,11 +105,12 @@ class World:
             ri.append(np.full(int(keep.sum()), self.inflated[i]))
         cxa, cya = np.concatenate(cx), np.concatenate(cy)
         z = np.zeros_like(cxa)
-        return World(cxa, cya, z, z.copy(), np.concatenate(r), np.concatenate(ri))
+        return World(cxa, cya, z, z.copy(), np.concatenate(r), np.concatenate(ri), self.budget)
 
     def segments_hit(self, p0: np.ndarray, t0: np.ndarray, p1: np.ndarray, t1: np.ndarray,
                      radius: np.ndarray | None = None) -> np.ndarray:
         """(N,) True where segment i (timed, paper 000 eq. 9) enters any inflated circle."""
+        self.check_budget()
         if self.count == 0:
             return np.zeros(len(p0), dtype=bool)
         r = self.inflated if radius is None else radius
@@ -101,6 +125,7 @@ class World:
 
     def points_free(self, p: np.ndarray, t: np.ndarray | float) -> np.ndarray:
         """(N,) True where point i at time t_i lies outside every inflated circle."""
+        self.check_budget()
         p = np.asarray(p, float).reshape(-1, 2)
         if self.count == 0:
             return np.ones(len(p), dtype=bool)
@@ -111,6 +136,7 @@ class World:
 
     def distance(self, p: np.ndarray, t: np.ndarray | float) -> np.ndarray:
         """(N, M) distance from point i at time t_i to obstacle j's inflated edge."""
+        self.check_budget()
         p = np.asarray(p, float).reshape(-1, 2)
         t = np.broadcast_to(np.asarray(t, float), (len(p),))
         dx = p[:, 0, None] - (self.cx + self.vx * t[:, None])
@@ -253,9 +279,7 @@ def recovery_gates(scenario: Scenario, world: World) -> list[np.ndarray]:
         if g >= scenario.start.x - 1.0:
             continue
         p = np.array([[g, 0.0], [0.0, 0.0]])
-        static = World(world.cx[~world.moving], world.cy[~world.moving],
-                       world.vx[~world.moving], world.vy[~world.moving],
-                       world.radius[~world.moving], world.inflated[~world.moving])
+        static = world.subset(~world.moving)
         if not static.segments_hit(p[:1], 0.0, p[1:], 1.0)[0]:
             out.append(p[0])
     return out or [np.array([min(10.0, scenario.start.x / 2.0), 0.0])]
