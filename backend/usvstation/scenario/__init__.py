@@ -16,6 +16,7 @@ from typing import Annotated, Any, Literal
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
 from usvstation.geometry import inflated_radius
+from usvstation.scenario.hull import start_refusal
 from usvstation.scenario.options import IGAOptions
 from usvstation.scenario.ships import MotherShip, TrafficShip
 
@@ -136,6 +137,9 @@ class Scenario(BaseModel):
             )
         if math.hypot(self.start.x - self.goal.x, self.start.y - self.goal.y) < 1.0:
             raise ValueError("goal: must lie at least 1 m from the start")
+        refusal = start_refusal(self)
+        if refusal:
+            raise ValueError(refusal)
         for field, point in (("start", self.start), ("goal", self.goal)):
             for i, obs in enumerate(self.obstacles):
                 r_l = inflated_radius(obs.radius, self.vessel.length,
