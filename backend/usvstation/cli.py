@@ -173,6 +173,11 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("--plots", type=Path, help="compare: folder for the SVG figures")
     bench.add_argument("--ompl", action="store_true",
                        help="compare: add OMPL's RRT*, Informed RRT* and BIT* (pip install ompl)")
+    bench.add_argument("--sweep", metavar="COUNTS",
+                       help="compare: difficulty sweep of paper 004's map over these obstacle "
+                       "counts, e.g. 40,120,200,280 (rrt-star's path/straight-line ratio)")
+    bench.add_argument("--sweep-maps", type=int, default=30, metavar="N",
+                       help="compare: maps per obstacle count in the sweep (default 30)")
     _add_campaign_parser(sub)
     return parser
 
@@ -429,6 +434,8 @@ def _cmd_bench_compare(args: argparse.Namespace) -> int:
             seeds=args.seeds if args.seeds != 5 else 2, hidden=args.hidden, plots=args.plots,
             ompl=args.ompl, first_seed=args.first_seed, hidden_from=args.hidden_from,
             track=not args.no_track,
+            sweep=[int(c) for c in args.sweep.split(",")] if args.sweep else None,
+            sweep_maps=args.sweep_maps,
             progress=lambda msg: print(msg, file=sys.stderr, flush=True))
     except ValueError as exc:
         raise CliError(str(exc), EXIT_INVALID) from None

@@ -29,6 +29,7 @@ from usvstation.planning.seeds.common import (
     World,
     cruise_speed,
     finish_plan,
+    path_metrics,
     recovery_gates,
 )
 from usvstation.planning.validate import MOVING_START_SPEED, current_vector
@@ -234,8 +235,11 @@ def _rrt_family(kind: str) -> Callable[[Scenario, int, RRTStarOptions], dict[str
             path = vpf_path(path, replace(world, budget=None), cruise, ro)
         elif kind == "bspline":
             path = bspline_path(path, step / 3.0)
+        own = path_metrics(path)  # the algorithm's own path, before the common finish
         return path, {"tree_path_length_m": round(raw_len, 6), "step_m": round(step, 6),
-                      "iterations": o.iterations}
+                      "iterations": o.iterations,
+                      "algorithm_path_length_m": round(own["length_m"], 6),
+                      "algorithm_total_turn_deg": round(own["total_turn_deg"], 6)}
 
     def run(sc: Scenario, seed: int, o: RRTStarOptions, started: float | None = None,
             clock: Clock = cpu_clock) -> Plan:
