@@ -10,6 +10,7 @@ import argparse
 import json
 import os
 import sys
+import time
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -70,8 +71,13 @@ def build_parser() -> argparse.ArgumentParser:
     plan.add_argument("--json", action="store_true", help="print the plan as JSON")
     plan.add_argument("--out", type=Path, help="also write the plan JSON to this file")
     plan.add_argument("--time-budget", type=float, default=None, metavar="S",
-                      help="wall-clock budget in seconds (planner.time_budget_s, default 5): "
-                      "past it the best valid plan so far, with a warning, or exit 3")
+                      help="wall-clock safety net of the command in seconds "
+                      "(planner.time_budget_s, default 5): past it the best valid plan so "
+                      "far, with a warning, or exit 3")
+    plan.add_argument("--max-evaluations", type=int, default=None, metavar="N",
+                      help="deterministic budget (planner.max_evaluations): candidate paths "
+                      "evaluated over all attempts; the plan does not depend on the "
+                      "machine's load (docs/planners.md \"Budget\")")
     plan.add_argument(
         "--set", dest="settings", action="append", default=[], type=_parse_setting,
         metavar="KEY=VALUE", help="override a planner option, e.g. --set population=120",
@@ -169,6 +175,11 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("--plots", type=Path, help="compare: folder for the SVG figures")
     bench.add_argument("--ompl", action="store_true",
                        help="compare: add OMPL's RRT*, Informed RRT* and BIT* (pip install ompl)")
+    bench.add_argument("--sweep", metavar="COUNTS",
+                       help="compare: difficulty sweep of paper 004's map over these obstacle "
+                       "counts, e.g. 40,120,200,280 (rrt-star's path/straight-line ratio)")
+    bench.add_argument("--sweep-maps", type=int, default=30, metavar="N",
+                       help="compare: maps per obstacle count in the sweep (default 30)")
     _add_campaign_parser(sub)
     _add_trial_parser(sub)
     return parser
@@ -237,6 +248,9 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def _cmd_plan(args: argparse.Namespace) -> int:
+    # --time-budget counts the process's CPU time from here (planning/budget.py), so that the
+    # command, the planner's imports included, keeps within it
+    started = time.process_time()
     from pydantic import ValidationError
 
     from usvstation.scenario import ScenarioError, format_validation_error, load_scenario
@@ -246,6 +260,8 @@ def _cmd_plan(args: argparse.Namespace) -> int:
         overrides = dict(args.settings)
         if args.time_budget is not None:
             overrides["time_budget_s"] = args.time_budget
+        if args.max_evaluations is not None:
+            overrides["max_evaluations"] = args.max_evaluations
         if args.planner == "iga":
             scenario.planner_options(**overrides)
     except ScenarioError as exc:
@@ -257,7 +273,7 @@ def _cmd_plan(args: argparse.Namespace) -> int:
     from usvstation.planning.registry import PlannerOptionError, plan_with
 
     try:
-        plan = plan_with(scenario, args.planner, args.seed, **overrides)
+        plan = plan_with(scenario, args.planner, args.seed, started=started, **overrides)
     except PlannerOptionError as exc:
         raise CliError(f"invalid option: {exc}", EXIT_INVALID) from None
     except ScenarioError as exc:
@@ -543,6 +559,8 @@ def _cmd_bench_compare(args: argparse.Namespace) -> int:
             seeds=args.seeds if args.seeds != 5 else 2, hidden=args.hidden, plots=args.plots,
             ompl=args.ompl, first_seed=args.first_seed, hidden_from=args.hidden_from,
             track=not args.no_track,
+            sweep=[int(c) for c in args.sweep.split(",")] if args.sweep else None,
+            sweep_maps=args.sweep_maps,
             progress=lambda msg: print(msg, file=sys.stderr, flush=True))
     except ValueError as exc:
         raise CliError(str(exc), EXIT_INVALID) from None

@@ -7,7 +7,8 @@ from usvstation.cli import main
 
 def test_bench_compare_json_and_markdown(tmp_path, capsys):
     rc = main(["bench", "compare", "--planners", "replan-ga,rrt-star", "--families",
-               "recovery,traps", "--seeds", "1", "--hidden", "1", "--hidden-from", "1003"])
+               "recovery,traps", "--seeds", "1", "--hidden", "1", "--hidden-from", "1003",
+               "--sweep", "40", "--sweep-maps", "2"])
     assert rc == 0
     out = capsys.readouterr()
     result = json.loads(out.out)
@@ -25,7 +26,16 @@ def test_bench_compare_json_and_markdown(tmp_path, capsys):
     for r in rows:
         if r["success"]:
             assert r["track_max_dev_m"] >= r["track_mean_dev_m"] >= 0.0
-    assert {"vpf_over_rrt_length", "bspline_over_rrt_length", "paper"} <= set(result["table_004"])
+    assert {"vpf_over_rrt_length", "bspline_over_rrt_length", "paper", "raw", "finished"} <= \
+        set(result["table_004"])
+    for family in ("recovery", "traps"):  # the shortest plan's path/straight-line ratio
+        d = result["difficulty"][family]
+        assert d["n"] >= 4 and d["ratio_median"] >= 1.0 and len(d["ratio_ci95"]) == 2
+    (sweep,) = result["difficulty_sweep"]
+    assert sweep["count"] == 40 and sweep["maps"] == 2 and sweep["ratio_median"] >= 1.0
+    e = result["summary"]["rrt-star"]["recovery"]
+    lo, hi = e["success_ci95"]
+    assert lo <= e["success_rate"] <= hi
     assert {"p50_ms", "p99_ms"} <= set(result["replan_002"])
     assert {"starboard_ok", "cases"} <= set(result["colregs_001"])
 

@@ -16,6 +16,7 @@ def test_quick_planner_bench(tmp_path):
     assert row["scenario"] == "case3" and row["valid"] == 2 and len(row["plan_time_ms"]) == 2
     assert row["plan_time_ms_median"] > 0
     assert "suite_plan_time_ms_median" in out  # its arithmetic: tests/unit/test_bench_summary.py
+    assert out["suite_median_cpu_ms"] > 0 and len(row["plan_cpu_ms"]) == 2
     for key in ("fit_d", "fit_t", "fit_ang", "fit_mal", "length_m", "duration_s",
                 "min_clearance_m", "generations"):
         assert row[key] is not None
@@ -34,7 +35,8 @@ def test_quick_planner_bench(tmp_path):
     assert out["machine"]["cores"] >= 1
     # issue 12: hidden families, re-planning, scaling, robustness, the paper's orderings
     assert set(out["hidden"]) == {"pointing_away", "strong_current", "crossing_ships",
-                                  "behind_ramp", "long_wall", "dense_field"}
+                                  "behind_ramp", "long_wall", "dense_field", "alongside",
+                                  "outline_astern_traffic"}
     for fam in out["hidden"].values():
         assert fam["returned_but_refused"] == []  # every plan returned passes the checker
         assert fam["clearance_diff_max_m"] <= 0.05

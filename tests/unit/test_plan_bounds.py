@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from usvstation.planning import fitness as fitness_mod
+from usvstation.planning.budget import Budget
 from usvstation.planning.encoding import GeneLayout
 from usvstation.planning.fitness import Evaluator
 from usvstation.planning.iga import EVAL_CHUNK, run_iga
@@ -25,11 +26,15 @@ from usvstation.planning.problem import Problem
 from usvstation.scenario import ScenarioError, load_scenario, parse_scenario
 
 
+def _ticking(budget_ticks, ticks, max_evaluations=None):
+    """A budget whose clock advances one tick per reading: the deadline in ticks."""
+    return Budget(max_evaluations, float(budget_ticks), clock=lambda: float(next(ticks)),
+                  started=0.0)
+
+
 def _run(budget_ticks, opts, problem, layout):
     """A run whose clock advances one tick per reading: the budget in ticks, no wall time."""
-    ticks = itertools.count()
-    return run_iga(problem, opts, layout, deadline=float(budget_ticks),
-                   clock=lambda: float(next(ticks)))
+    return run_iga(problem, opts, layout, _ticking(budget_ticks, itertools.count()))
 
 
 def test_time_budget_stops_within_one_batch_of_evaluations():
@@ -40,7 +45,7 @@ def test_time_budget_stops_within_one_batch_of_evaluations():
     full = _run(10**9, opts, problem, layout)
     assert full.stop_reason == "generations_max"
     ticks = itertools.count()
-    run_iga(problem, opts, layout, deadline=1e18, clock=lambda: float(next(ticks)))
+    run_iga(problem, opts, layout, _ticking(1e18, ticks))
     total = next(ticks)  # clock readings of a whole run
     budgets = sorted({int(b) for b in np.linspace(0, total - 2, 14)})
     previous = None

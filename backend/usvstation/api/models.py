@@ -31,6 +31,12 @@ class PlanRequest(BaseModel):
         False, description="plan from the boat's latest telemetry (position, heading, speed), "
         "obstacles propagated to that instant of the running mission",
     )
+    time_budget_s: float | None = Field(
+        None, gt=0.0, le=600.0, description="wall-clock safety net of this plan, s (default: "
+        "the scenario's planner.time_budget_s, else 5)")
+    max_evaluations: int | None = Field(
+        None, ge=1, le=50_000_000, description="deterministic budget of this plan: candidate "
+        "paths evaluated (default: the scenario's planner.max_evaluations, else the planner's)")
 
 
 class Accepted(BaseModel):

@@ -28,6 +28,7 @@ async def post_plan(station: StationDep, req: PlanRequest | None = None) -> Acce
         handler = station.boat.handler
         scenario = scenario_from_boat(scenario, handler and handler.telemetry,
                                       handler and handler.run_t0)
+    scenario = scenario.with_budget(req.time_budget_s, req.max_evaluations)
     # the working scenario, or one made from it (from the boat, /api/world/scenario): its
     # plan stays uploadable until the working scenario itself changes
     basis = working if scenario.name == working.name else None

@@ -8,6 +8,11 @@ the water between hull and obstacle it saw, the first turn from the start
 heading, and the speed through the water (segment's average ground velocity
 minus the current). Sampling can only over-estimate clearance by at most
 the distance travelled between two samples, which `STEP_M` bounds.
+
+The mother ship's hull (issue 27): every sample whose centre lies outside the
+approach corridor (x >= 0, |y| <= ramp_width / 2 + x tan 10 deg) must keep
+the boat's hull circle off the ship's polygon, and no sample may lie inside
+the polygon; the polygon is rebuilt here from the scenario's fields.
 """
 
 from __future__ import annotations
@@ -33,6 +38,7 @@ class CheckReport:
 
     clearance_m: float | None = None  # hull-to-obstacle water on time
     clearance_margin_m: float | None = None  # the same, early or late by up to time_margin_s
+    ship_clearance_m: float | None = None  # hull-to-mother-ship water outside the corridor
     first_turn_deg: float | None = None
     water_speed_range: tuple[float, float] | None = None
     problems: list[str] = field(default_factory=list)
@@ -98,7 +104,47 @@ def check_plan(plan: dict[str, Any], scenario: Scenario,
                 rep.problems.append(
                     f"hull {rep.clearance_margin_m:.3f} m from a moving obstacle when up to "
                     f"{margin:g} s early or late")
+    ship = scenario.mother_ship
+    if ship is not None and (ship.beam is not None or ship.outline is not None):
+        rep.ship_clearance_m = _sampled_ship_clearance(x, y, scenario)
+        if rep.ship_clearance_m is not None and rep.ship_clearance_m <= 0.0:
+            rep.problems.append(f"hull {rep.ship_clearance_m:.3f} m from the mother ship's hull "
+                                "outside the approach corridor (collision)")
     return rep
+
+
+def _sampled_ship_clearance(x: np.ndarray, y: np.ndarray, scenario: Scenario) -> float | None:
+    """Least water between the boat's hull circle and the ship's polygon over samples
+    `STEP_M` apart outside the corridor (negative inside the polygon)."""
+    ship = scenario.mother_ship
+    assert ship is not None
+    if ship.outline is not None:
+        poly = np.array(ship.outline, dtype=float)
+    else:
+        assert ship.beam is not None
+        b = ship.beam / 2.0
+        poly = np.array([[0.0, b], [-ship.length, b], [-ship.length, -b], [0.0, -b]])
+    length = np.hypot(np.diff(x), np.diff(y))
+    n = np.maximum(np.ceil(length / STEP_M).astype(int), 1)
+    px = np.concatenate([np.linspace(x[i], x[i + 1], n[i] + 1) for i in range(len(n))])
+    py = np.concatenate([np.linspace(y[i], y[i + 1], n[i] + 1) for i in range(len(n))])
+    out = ~((px >= 0.0) & (np.abs(py) <= ship.ramp_width / 2.0
+                           + px * math.tan(math.radians(10.0))))
+    px, py = px[out], py[out]
+    if px.size == 0:
+        return None
+    a, b = poly, np.roll(poly, -1, axis=0)
+    best = np.full(px.size, np.inf)
+    crossings = np.zeros(px.size, dtype=int)
+    for (ax, ay), (bx, by) in zip(a, b, strict=True):
+        ex, ey = bx - ax, by - ay
+        s = np.clip(((px - ax) * ex + (py - ay) * ey) / max(ex * ex + ey * ey, 1e-18), 0, 1)
+        best = np.minimum(best, np.hypot(px - ax - s * ex, py - ay - s * ey))
+        if ay != by:
+            xs = ax + (py - ay) * ex / ey
+            crossings += ((ay > py) != (by > py)) & (px < xs)
+    d = np.where(crossings % 2 == 1, -best, best) - scenario.vessel.length / 2.0
+    return float(d.min())
 
 
 def _sampled_clearance(x: np.ndarray, y: np.ndarray, t: np.ndarray, scenario: Scenario,

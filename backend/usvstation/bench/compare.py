@@ -273,7 +273,10 @@ def _row_from_plan(row: dict[str, Any], scenario: Scenario, family: str, plan: d
                normalization_index=pm["normalization_index"], duration_s=m["duration_s"],
                min_clearance_m=m["min_clearance_m"], total_turn_deg=pm["total_turn_deg"],
                max_turn_deg=pm["max_turn_deg"], plan_time_ms=plan_time_ms,
-               replan_latency_ms=m.get("replan_latency_ms", []))
+               replan_latency_ms=m.get("replan_latency_ms", []),
+               straight_m=float(np.hypot(*(pts[-1] - pts[0]))),
+               algorithm_path_length_m=m.get("algorithm_path_length_m"),
+               algorithm_total_turn_deg=m.get("algorithm_total_turn_deg"))
     if family == "colregs":
         row.update(colregs_metrics(scenario, plan))
     row["path"] = pts.round(3).tolist()
@@ -303,7 +306,8 @@ def run_compare(planners: list[str] | None = None, families: list[str] | None = 
                 seeds: int = 2, hidden: int = 6, dense_maps: int = 2,
                 progress: Callable[[str], None] | None = None,
                 plots: Path | None = None, ompl: bool = False, first_seed: int = 1,
-                hidden_from: int = HIDDEN_FROM, track: bool = True) -> dict[str, Any]:
+                hidden_from: int = HIDDEN_FROM, track: bool = True,
+                sweep: list[int] | None = None, sweep_maps: int = 30) -> dict[str, Any]:
     """Every planner on every family; `ompl` adds OMPL RRT*, Informed RRT*, BIT* if installed.
 
     Planner seeds are first_seed .. first_seed + seeds - 1; each family has its public
@@ -345,8 +349,13 @@ def run_compare(planners: list[str] | None = None, families: list[str] | None = 
     result = {"planners": planners, "families": families, "seeds": seeds,
               "first_seed": first_seed, "hidden": hidden, "hidden_from": hidden_from,
               "summary": summarise(rows), "table_004": table_004(rows),
+              "difficulty": difficulty(rows),
               "replan_002": replan_002(rows), "colregs_001": colregs_001(rows, seeds, progress),
               "rows": [{k: v for k, v in r.items() if k != "path"} for r in rows]}
+    if sweep:
+        if progress:
+            progress(f"difficulty sweep over {sweep} obstacles, {sweep_maps} maps each")
+        result["difficulty_sweep"] = difficulty_sweep(sweep, sweep_maps)
     if plots is not None:
         from usvstation.bench.compare_plots import write_plots
 
@@ -368,6 +377,9 @@ def summarise(rows: list[dict[str, Any]]) -> dict[str, Any]:
                 vals = [r[key] for r in ok if r.get(key) is not None]
                 return round(float(np.median(vals)), 4) if vals else None
             entry = {"episodes": len(rs), "success_rate": round(len(ok) / len(rs), 4),
+                     "success_ci95": wilson(len(ok), len(rs)),
+                     "normalization_index_ci95": mean_ci(
+                         [r["normalization_index"] for r in ok]),
                      "length_m": med("length_m"), "normalization_index": med("normalization_index"),
                      "duration_s": med("duration_s"), "min_clearance_m": med("min_clearance_m"),
                      "total_turn_deg": med("total_turn_deg"), "max_turn_deg": med("max_turn_deg"),
@@ -381,6 +393,66 @@ def summarise(rows: list[dict[str, Any]]) -> dict[str, Any]:
     return table
 
 
+def wilson(k: int, n: int, z: float = 1.96) -> list[float] | None:
+    """95 % Wilson score interval of a share k / n."""
+    if n == 0:
+        return None
+    p = k / n
+    centre = (p + z * z / (2 * n)) / (1 + z * z / n)
+    half = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / (1 + z * z / n)
+    return [round(max(centre - half, 0.0), 4), round(min(centre + half, 1.0), 4)]
+
+
+def mean_ci(values: list[float], z: float = 1.96) -> list[float] | None:
+    """Mean +- 1.96 standard errors (normal approximation; n >= 2)."""
+    vals = [v for v in values if v is not None]
+    if len(vals) < 2:
+        return None
+    m, se = float(np.mean(vals)), float(np.std(vals, ddof=1)) / math.sqrt(len(vals))
+    return [round(m - z * se, 4), round(m + z * se, 4)]
+
+
+def difficulty(rows: list[dict[str, Any]]) -> dict[str, Any]:
+    """Per family: the path/straight-line ratio of the shortest plan any planner found for each
+    (scenario, seed): how far the maps force a detour (paper 004's maps: 1.36-1.45)."""
+    best: dict[tuple, float] = {}
+    fam_of: dict[tuple, str] = {}
+    for r in rows:
+        if r["success"] and r.get("straight_m"):
+            key = (r["scenario"], r["seed"])
+            ratio = r["length_m"] / r["straight_m"]
+            best[key] = min(best.get(key, math.inf), ratio)
+            fam_of[key] = r["family"]
+    out: dict[str, Any] = {}
+    for fam in sorted(set(fam_of.values())):
+        vals = [v for k, v in best.items() if fam_of[k] == fam]
+        out[fam] = {"n": len(vals), "ratio_median": round(float(np.median(vals)), 4),
+                    "ratio_mean": round(float(np.mean(vals)), 4), "ratio_ci95": mean_ci(vals)}
+    return out
+
+
+def difficulty_sweep(counts: list[int], maps: int, seed: int = 1,
+                     planner: str = "rrt-star") -> list[dict[str, Any]]:
+    """Paper 004's 1 km map with more and more circles: `planner`'s path/straight-line ratio
+    (median, 95 % interval) and success per obstacle count, over `maps` maps per count."""
+    out = []
+    for count in counts:
+        ratios, ok = [], 0
+        for k in range(maps):
+            sc = dense_004(k % len(DENSE_PAIRS), k, count)
+            try:
+                plan = plan_with(sc, planner, seed).to_document()
+            except NoFeasiblePlan:
+                continue
+            ok += 1
+            ratios.append(plan["metrics"]["length_m"] / math.hypot(
+                sc.start.x - sc.goal.x, sc.start.y - sc.goal.y))
+        out.append({"count": count, "maps": maps, "planner": planner, "success": ok,
+                    "ratio_median": round(float(np.median(ratios)), 4) if ratios else None,
+                    "ratio_ci95": mean_ci(ratios)})
+    return out
+
+
 def _share(rows: list[dict[str, Any]]) -> float | None:
     return round(sum(r["success"] for r in rows) / len(rows), 4) if rows else None
 
@@ -391,6 +463,7 @@ def table_004(rows: list[dict[str, Any]]) -> dict[str, Any]:
           if r["family"] == "dense" and r["success"]}
     ratios: dict[str, list[float]] = {k: [] for k in PAPER_004}
     ratios.update(vpf_over_rrt_time=[], bspline_over_rrt_time=[])
+    raw: dict[str, list[float]] = {k: [] for k in PAPER_004}
     for (pl, sc, seed), r in by.items():
         if pl != "rrt-star":
             continue
@@ -402,8 +475,20 @@ def table_004(rows: list[dict[str, Any]]) -> dict[str, Any]:
             if r["total_turn_deg"] > 0:
                 ratios[f"{tag}_over_rrt_tta"].append(o["total_turn_deg"] / r["total_turn_deg"])
             ratios[f"{tag}_over_rrt_time"].append(o["plan_time_ms"] / r["plan_time_ms"])
+            if r.get("algorithm_path_length_m") and o.get("algorithm_path_length_m"):
+                raw[f"{tag}_over_rrt_length"].append(
+                    o["algorithm_path_length_m"] / r["algorithm_path_length_m"])
+                if r.get("algorithm_total_turn_deg"):
+                    raw[f"{tag}_over_rrt_tta"].append(
+                        o["algorithm_total_turn_deg"] / r["algorithm_total_turn_deg"])
     out: dict[str, Any] = {k: (round(float(np.mean(v)), 4) if v else None)
                            for k, v in ratios.items()}
+    # finished: the plans as they leave (run-in, turn limit, speed profile); raw: the
+    # algorithms' own paths (RRT* tree path, after VPF or B-spline), before that finish
+    out["finished"] = {k: {"mean": out[k], "ci95": mean_ci(v), "n": len(v)}
+                       for k, v in ratios.items() if k in PAPER_004}
+    out["raw"] = {k: {"mean": round(float(np.mean(v)), 4) if v else None, "ci95": mean_ci(v),
+                      "n": len(v)} for k, v in raw.items()}
     out["pairs"] = len(ratios["vpf_over_rrt_length"])
     out["paper"] = PAPER_004
     dense = [r for r in rows if r["family"] == "dense"]

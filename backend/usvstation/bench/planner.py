@@ -75,7 +75,11 @@ def run_planner_bench(
         ablation_rows.append(bench_ablations(scenario, ablation_seeds))
         progress(f"DEAP and pymoo baselines on {scenario.name}")
         out["baseline"]["runs"].extend(bench_deap(scenario, deap_seeds, deap_max))
+    if not quick:  # two fresh processes, one compiling: seconds
+        progress("cold start of the compiled kernel")
+        out["cold_start"] = cold_start()
     out["suite_plan_time_ms_median"] = pooled_median(out["scenarios"], "plan_time_ms")
+    out["suite_median_cpu_ms"] = pooled_median(out["scenarios"], "plan_cpu_ms")
     out["ablation"].update(ablation_tables(ablation_rows))
     out["baseline"]["summary"] = baseline_summary(out["baseline"]["runs"])
     if random_count > 0:
@@ -92,6 +96,44 @@ def run_planner_bench(
     progress("robustness to running early or late")
     out["robustness"] = bench_robustness(2 if quick else 20)
     out["orderings"] = paper_orderings(out)
+    return out
+
+
+_COLD = """
+from usvstation.clock import Stopwatch
+watch = Stopwatch()
+from usvstation.planning import kernel
+from usvstation.planning.plan import plan_scenario
+from usvstation.scenario import load_scenario
+t1 = watch.elapsed()
+plan_scenario(load_scenario("case1"), seed=1)
+t2 = watch.elapsed()
+plan_scenario(load_scenario("case1"), seed=2)
+t3 = watch.elapsed()
+print(kernel.AVAILABLE, t1, t2 - t1, t3 - t2)
+"""
+
+
+def cold_start() -> dict[str, Any]:
+    """The compiled kernel's first use: a fresh process with an empty numba cache (compile),
+    then one that finds the cache (`cache=True`); first and second plan of case1, ms."""
+    import subprocess
+    import sys
+    import tempfile
+
+    out: dict[str, Any] = {}
+    with tempfile.TemporaryDirectory() as cache:
+        env = {**os.environ, "NUMBA_CACHE_DIR": cache}
+        for label in ("compile", "cached"):
+            res = subprocess.run([sys.executable, "-c", _COLD], capture_output=True, text=True,
+                                 env=env, timeout=300, check=False)
+            fields = res.stdout.split()
+            if res.returncode != 0 or len(fields) != 4:
+                return {"error": (res.stderr.strip().splitlines() or ["no output"])[-1]}
+            out["kernel"] = fields[0] == "True"
+            out[label] = {"import_ms": round(1000 * float(fields[1]), 1),
+                          "first_plan_ms": round(1000 * float(fields[2]), 1),
+                          "second_plan_ms": round(1000 * float(fields[3]), 1)}
     return out
 
 
@@ -179,13 +221,15 @@ def bench_scaling(counts: list[int], seeds: int) -> dict[str, Any]:
     fields of bench/scenarios.py, 300 m x 300 m)."""
     out = {}
     for n in counts:
-        times, valid = [], 0
+        times, cpu, valid = [], [], 0
         for s in range(seeds):
             scenario = dense_field(s, count=n)
-            t, plan = timed_plan(scenario, 1)
+            t, c, plan = cpu_timed_plan(scenario, 1)
             times.append(t)
+            cpu.append(c)
             valid += plan is not None and check_plan(plan, scenario).ok
         out[str(n)] = {"plan_time_ms_median": round(1000 * statistics.median(times), 2),
+                       "plan_cpu_ms_median": round(1000 * statistics.median(cpu), 2),
                        "valid": valid, "seeds": seeds}
     return out
 
@@ -282,23 +326,34 @@ def machine_info() -> dict[str, Any]:
 def timed_plan(scenario: Scenario, seed: int, **overrides: Any
                ) -> tuple[float, PlanDocument | None]:
     """Plan time and the plan, in the stable format the bench's checker reads."""
+    wall, _, plan = cpu_timed_plan(scenario, seed, **overrides)
+    return wall, plan
+
+
+def cpu_timed_plan(scenario: Scenario, seed: int, **overrides: Any
+                   ) -> tuple[float, float, PlanDocument | None]:
+    """Wall time, CPU time of this process (what the planner got, whatever else runs on
+    the machine) and the plan."""
     watch = Stopwatch()
     try:
         plan: PlanDocument | None = plan_scenario(scenario, seed=seed, **overrides).to_document()
     except NoFeasiblePlan:
         plan = None
-    return watch.elapsed(), plan
+    return watch.elapsed(), watch.cpu(), plan
 
 
 def bench_scenario(scenario: Scenario, seeds: list[int]) -> dict[str, Any]:
     """Median plan time over seeds and the plan's figures (medians over seeds)."""
-    runs = [timed_plan(scenario, s) for s in seeds]
-    plans = [p for _, p in runs if p is not None]
-    times = [t for t, _ in runs]
+    runs = [cpu_timed_plan(scenario, s) for s in seeds]
+    plans = [p for _, _, p in runs if p is not None]
+    times = [t for t, _, _ in runs]
+    cpu = [c for _, c, _ in runs]
     row: dict[str, Any] = {
         "scenario": scenario.name,
         "plan_time_ms_median": round(1000 * statistics.median(times), 2),
         "plan_time_ms": [round(1000 * t, 2) for t in times],
+        "plan_cpu_ms_median": round(1000 * statistics.median(cpu), 2),
+        "plan_cpu_ms": [round(1000 * c, 2) for c in cpu],
         "valid": sum(1 for p in plans if not plan_violations(p, scenario)),
         "seeds": len(seeds),
     }
@@ -451,6 +506,8 @@ def render_markdown(r: dict[str, Any]) -> str:
           ", ".join(f"{t:.0f}" for t in s["plan_time_ms"]), f"{s['valid']}/{s['seeds']}",
           s["fitness"], s["fit_d"], s["fit_t"], s["fit_ang"], s["fit_mal"], s["length_m"],
           s["duration_s"], s["min_clearance_m"], s["generations"]] for s in r["scenarios"]))
+    if "suite_median_cpu_ms" in r:
+        lines += ["", f"Public-suite median CPU time of a plan: {r['suite_median_cpu_ms']} ms."]
     if "suite_plan_time_ms_median" in r:
         lines += ["", f"Median plan time over the whole suite (every scenario and seed): "
                       f"{r['suite_plan_time_ms_median']} ms."]

@@ -238,6 +238,61 @@ def dense_field(seed: int, count: int = 500) -> Scenario:
     })
 
 
+def alongside(seed: int) -> Scenario:
+    """A recovery from beside the mother ship's hull, abeam of it (behind the ramp's beam):
+    a 40-80 m ship of 8-16 m beam, the boat 3-30 m off either side, any heading, still or
+    under way, 0-4 small obstacles out at sea, a current up to 0.3 m/s (issue 27)."""
+    rng = np.random.default_rng(70_000 + seed)
+    vessel = Vessel()
+    length, beam = round(rng.uniform(40.0, 80.0), 1), round(rng.uniform(8.0, 16.0), 1)
+    side = rng.choice([-1.0, 1.0])
+    sx = rng.uniform(-length + 3.0, -2.0)
+    sy = side * (beam / 2.0 + rng.uniform(3.0, 30.0))
+    obstacles = [{"x": round(rng.uniform(15.0, 80.0), 2), "y": round(rng.uniform(-40.0, 40.0), 2),
+                  "radius": round(rng.uniform(0.5, 2.0), 2)}
+                 for _ in range(int(rng.integers(0, 5)))]
+    obstacles = _clear_of(obstacles, [(sx, sy), (0.0, 0.0)], vessel)
+    moving = rng.random() < 0.6
+    return parse_scenario({
+        "name": f"alongside-{seed}", "origin": _ORIGIN,
+        "start": {"x": round(sx, 2), "y": round(sy, 2),
+                  "heading_deg": round(rng.uniform(0.0, 360.0), 1),
+                  "speed": round(rng.uniform(0.5, 2.0), 2) if moving else 0.0},
+        "obstacles": obstacles, "vessel": vessel.model_dump(), "environment": _environment(rng),
+        "mother_ship": {"length": length, "beam": beam, "ramp_width": 3.0},
+    })
+
+
+def outline_astern_traffic(seed: int) -> Scenario:
+    """A recovery to a ship given by its outline (square stern with the ramp, tapered bow),
+    with 1-3 boats crossing astern of it at 1-3 m/s across the approach, timed to pass the
+    ramp axis while the boat comes in; start 40-120 m out within 45 degrees (issue 27)."""
+    rng = np.random.default_rng(80_000 + seed)
+    vessel = Vessel()
+    length, beam = rng.uniform(40.0, 90.0), rng.uniform(10.0, 18.0)
+    h = beam / 2.0
+    outline = [[0.0, -h], [0.0, h], [-0.7 * length, h], [-length, 0.0], [-0.7 * length, -h]]
+    dist, sx, sy = _out_at_sea(rng, 40.0, 120.0, 45.0)
+    obstacles = []
+    for _ in range(int(rng.integers(1, 4))):
+        cross_x = rng.uniform(8.0, 0.7 * sx)  # where it crosses the ramp axis
+        speed = rng.uniform(1.0, 3.0) * rng.choice([-1.0, 1.0])
+        t_cross = (dist - cross_x) / 1.5 + rng.uniform(-10.0, 10.0)
+        obstacles.append({"x": round(cross_x, 2), "y": round(-speed * max(t_cross, 1.0), 2),
+                          "radius": round(rng.uniform(1.5, 4.0), 2), "vx": 0.0,
+                          "vy": round(speed, 3)})
+    obstacles = _clear_of(obstacles, [(sx, sy), (0.0, 0.0)], vessel)
+    return parse_scenario({
+        "name": f"outline-astern-traffic-{seed}", "origin": _ORIGIN,
+        "start": {"x": round(sx, 2), "y": round(sy, 2),
+                  "heading_deg": round(math.degrees(math.atan2(-sy, -sx)) % 360, 2),
+                  "speed": 1.0},
+        "obstacles": obstacles, "vessel": vessel.model_dump(), "environment": _environment(rng),
+        "mother_ship": {"length": round(length, 1), "ramp_width": 3.0,
+                        "outline": [[round(a, 2), round(b, 2)] for a, b in outline]},
+    })
+
+
 HIDDEN_FAMILIES = {
     "pointing_away": pointing_away,
     "strong_current": strong_current,
@@ -245,4 +300,6 @@ HIDDEN_FAMILIES = {
     "behind_ramp": behind_ramp,
     "long_wall": long_wall,
     "dense_field": dense_field,
+    "alongside": alongside,
+    "outline_astern_traffic": outline_astern_traffic,
 }

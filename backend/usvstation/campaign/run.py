@@ -39,7 +39,7 @@ def episodes(spec: CampaignSpec) -> list[dict[str, Any]]:
                         out.append({"key": key, "planner": pl, "family": fam, "scenario": sc,
                                     "seed": seed, "current": dist,
                                     "current_dir_deg": spec.current_dir_deg,
-                                    "options": spec.options.get(pl, {}),
+                                    "options": spec.planner_options(pl),
                                     "hidden": spec.hidden, "dense_maps": spec.dense_maps})
     return out
 

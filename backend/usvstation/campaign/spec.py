@@ -7,7 +7,9 @@ Optional: `name` (default the file stem), `disturbances = [0.0, 0.2]`
 `current_dir_deg = 0.0`, `hidden = 6` (seeded hidden scenarios per family
 beside the public ones, as in `bench compare`), `dense_maps = 2` (seeded maps
 per 004 start/goal pair),
-`options = { "rrt-star" = { iterations = 800 } }` (per-planner options).
+`options = { "rrt-star" = { iterations = 800 } }` (per-planner options),
+`time_budget_s = 5.0` and `max_evaluations = 20000` (the budget every planner gets, unless
+its own options set it: docs/planners.md "Budget").
 """
 
 from __future__ import annotations
@@ -39,6 +41,14 @@ class CampaignSpec(BaseModel):
     hidden: int = Field(6, ge=0, le=10_000)
     dense_maps: int = Field(2, ge=1, le=1000)
     options: dict[str, dict[str, Any]] = Field(default_factory=dict)
+    time_budget_s: float | None = Field(None, gt=0.0, le=600.0)
+    max_evaluations: int | None = Field(None, ge=1, le=50_000_000)
+
+    def planner_options(self, planner: str) -> dict[str, Any]:
+        """The options of one planner: the common budget, then the planner's own options."""
+        budget = {k: v for k, v in (("time_budget_s", self.time_budget_s),
+                                    ("max_evaluations", self.max_evaluations)) if v is not None}
+        return {**budget, **self.options.get(planner, {})}
 
     @field_validator("planners")
     @classmethod

@@ -3,7 +3,7 @@
 Nothing here does I/O or reads a clock: callers pass received bytes, the monotonic time
 `now` (seconds) in, and take bytes and events out:
 
-    proto = StationProtocol(LinkConfig(), now, key=key, unix_time=time.time())
+    proto = StationProtocol(LinkConfig(), now, key=key, unix_time=clock.unix())
     events = proto.receive_data(data, now)   # bytes from the radio
     events += proto.poll(now)                # timers: heartbeat, retries, link loss
     wire = proto.data_to_send()              # bytes for the radio

@@ -30,6 +30,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from usvstation.planning.encoding import PathBatch
+from usvstation.planning.kernel import AVAILABLE as KERNEL
+from usvstation.planning.kernel import eq12_batch
 from usvstation.planning.problem import Problem
 from usvstation.planning.xyt import (
     PRUNE_ELEMENTS,
@@ -265,8 +267,52 @@ class Evaluator:
         return np.where(feasible, opts.scale_A / denom, 0.0)
 
     def fitness(self, paths: PathBatch) -> np.ndarray:
-        """The GA's inner loop: `self(paths).fitness`, the same values, with the collision
-        test (the costly gate) run only on the paths that pass every other gate."""
+        """The GA's inner loop: `self(paths).fitness`, the same values, in one compiled
+        call (planning/kernel.py) where numba is available, else `fitness_numpy`."""
+        args = self._kernel_args()
+        if args is None:
+            return self.fitness_numpy(paths)
+        problem = self.problem
+        first_bad = (first_turn(paths, problem) > problem.turn_max
+                     if problem.start_heading is not None else self._no_flags(len(paths)))
+        heading = segment_headings(paths)
+        return eq12_batch(paths.x.T, paths.y.T, paths.v.T, paths.t.T, paths.seg_len.T,
+                          heading.T, first_bad, *args)
+
+    def _no_flags(self, n: int) -> np.ndarray:
+        flags = self.__dict__.get("_flags")
+        if flags is None or flags.shape[0] < n:
+            flags = self.__dict__["_flags"] = np.zeros(max(n, 256), dtype=bool)
+        return flags[:n]
+
+    def _kernel_args(self) -> tuple[np.ndarray, ...] | None:
+        """The kernel's constant arguments, or None where it does not apply (no numba, EG3's
+        linear fitness, no precomputed pairs with obstacles present)."""
+        if "_kargs" in self.__dict__:
+            return self.__dict__["_kargs"]
+        problem, opts = self.problem, self.opts
+        args: tuple[np.ndarray, ...] | None = None
+        if KERNEL and opts.fitness == "eq12" and (
+                self.pairs is not None or problem.obstacles.count == 0):
+            if self.pairs is None:
+                seg, obs = np.zeros(0, np.int64), np.zeros((0, 5))
+            else:
+                seg = self.pairs[0].astype(np.int64)
+                obs = np.ascontiguousarray(np.column_stack([a[:, 0] for a in self._pair_obs]))
+            limits = np.array([problem.accel_max, problem.speed_min, problem.speed_max,
+                               problem.turn_max, problem.current[0], problem.current[1],
+                               self.distance])
+            weights = np.array([opts.weight_a, opts.weight_b, opts.weight_c,
+                                opts.weight_d if problem.recovery else 0.0, opts.scale_A,
+                                1.0 if opts.terms == "normalised" else 0.0])
+            args = (seg, obs, limits, weights)
+        self.__dict__["_kargs"] = args
+        return args
+
+    def fitness_numpy(self, paths: PathBatch) -> np.ndarray:
+        """The NumPy reference of `fitness`: `self(paths).fitness`, the same values, with
+        the collision test (the costly gate) run only on the paths that pass every other
+        gate."""
         if self.opts.fitness == "linear":
             return self(paths).fitness
         turns = turn_angles(segment_headings(paths))

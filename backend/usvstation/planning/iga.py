@@ -22,12 +22,12 @@ generations.
 
 from __future__ import annotations
 
-import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
 
+from usvstation.planning.budget import Budget
 from usvstation.planning.encoding import GeneLayout, PathBatch
 from usvstation.planning.fitness import Evaluation, Evaluator
 from usvstation.planning.preheat import PreheatReport, preheat, random_levels
@@ -35,7 +35,7 @@ from usvstation.planning.problem import Problem
 from usvstation.scenario.options import IGAOptions
 
 _BUMP_LOG_M = (float(np.log(0.6)), float(np.log(12.0)))  # local_reinit's bump amplitude, log m
-EVAL_CHUNK = 128  # paths per evaluation pass; the time budget is checked between passes
+EVAL_CHUNK = 128  # paths per evaluation pass; the budget is checked between passes
 
 
 @dataclass
@@ -66,16 +66,20 @@ class _Population:
 
 def run_iga(
     problem: Problem, opts: IGAOptions, layout: GeneLayout | None = None,
-    deadline: float | None = None, clock: Callable[[], float] = time.perf_counter,
+    budget: Budget | None = None,
 ) -> IGAResult:
-    """Plan with the IGA; deterministic for a given `opts.seed` (unless the `deadline`,
-    a `clock()` value, cuts the run short: stop_reason "time_budget").
+    """Plan with the IGA; deterministic for a given `opts.seed`.
 
-    The budget is checked after every preheating draw and every `EVAL_CHUNK` paths
-    evaluated, so a run overshoots its deadline by at most one such batch.
+    `budget` (default: the options' own) is shared with the plan's other
+    attempts. Its evaluation count is checked after every `EVAL_CHUNK` paths
+    evaluated and after every generation (stop_reason "max_evaluations"), at
+    points that do not depend on time. Its wall deadline, the safety net, is
+    checked there too and after every preheating draw (stop_reason
+    "time_budget"), so a run overshoots it by at most one such batch.
     """
-    t0 = time.perf_counter()
-    expired = _expiry(deadline, clock)
+    budget = budget or Budget(opts.evaluation_budget, opts.time_budget_s)
+    t0 = budget.wall()
+    expired = budget.time_expired
     rng = np.random.default_rng(opts.seed)
     layout = layout or GeneLayout.build(problem, opts)
     pop_n, n_elite = opts.population, opts.elite_count
@@ -83,21 +87,19 @@ def run_iga(
 
     evaluator = Evaluator(problem, opts, layout.segment_x_range())
 
-    evaluations = 0
-
     def fitness(codes: np.ndarray) -> tuple[np.ndarray, bool]:
         """Eq. 12 of `codes` in chunks, the budget checked after each; rows left out when
         it runs out keep fitness 0. Returns (fitness, complete)."""
-        nonlocal evaluations
         out = np.zeros(codes.shape[0])
         for k in range(0, codes.shape[0], EVAL_CHUNK):
             part = codes[k:k + EVAL_CHUNK]
             out[k:k + part.shape[0]] = evaluator.fitness(layout.decode_codes(part))
-            evaluations += part.shape[0]
-            if k + EVAL_CHUNK < codes.shape[0] and expired():
+            budget.spend(part.shape[0])
+            if k + EVAL_CHUNK < codes.shape[0] and budget.exhausted():
                 return out, False
         return out, True
 
+    evaluations_before = budget.evaluations
     levels, fresh, report = _foundation(layout, problem, opts, rng, expired)
     codes = layout.levels_to_codes(levels)
     first_fit, complete = fitness(codes)
@@ -106,10 +108,10 @@ def run_iga(
     best_codes, best_fit = pop.codes[np.argmax(pop.fit)].copy(), float(pop.fit.max())
     hist_best, hist_elite = [best_fit], [_elite_mean(pop.fit, n_elite)]
     stop, gen = "generations_max", 0
-    if not complete or expired():
-        stop = "time_budget"
+    if not complete or budget.exhausted():
+        stop = budget.stop_reason() or "time_budget"
     n_newborn = pop_n // 2  # SSIH candidates per generation, sized from the last death toll
-    while gen < opts.generations_max and stop != "time_budget":
+    while gen < opts.generations_max and stop not in ("time_budget", "max_evaluations"):
         gen += 1
         order = np.argsort(-pop.fit, kind="stable")
         elite = order[:n_elite]
@@ -134,8 +136,8 @@ def run_iga(
         hist_best.append(best_fit)
         hist_elite.append(_elite_mean(pop.fit, n_elite))
         reason = _converged(hist_best, opts)
-        if reason is None and expired():
-            reason = "time_budget"
+        if reason is None and budget.exhausted():
+            reason = budget.stop_reason()
         if reason:
             stop = reason
             break
@@ -143,8 +145,9 @@ def run_iga(
     best = layout.decode_codes(best_codes[None, :])
     return IGAResult(
         layout=layout, best=best, evaluation=evaluator(best), generations=gen,
-        stop_reason=stop, elapsed_s=time.perf_counter() - t0, history_best=hist_best,
-        history_elite_mean=hist_elite, preheat=report, evaluations=evaluations,
+        stop_reason=stop, elapsed_s=budget.wall() - t0, history_best=hist_best,
+        history_elite_mean=hist_elite, preheat=report,
+        evaluations=budget.evaluations - evaluations_before,
     )
 
 
@@ -178,13 +181,6 @@ def _foundation(
     if levels.shape[0] < pop_n:
         levels = np.concatenate([levels, random_levels(layout, rng, pop_n - levels.shape[0])])
     return levels, layout.levels_to_codes(fresh), report
-
-
-def _expiry(deadline: float | None, clock: Callable[[], float]) -> Callable[[], bool]:
-    """A test of the time budget: True once `clock()` is past `deadline` (never without one)."""
-    if deadline is None:
-        return lambda: False
-    return lambda: clock() > deadline
 
 
 def _elite_mean(fit: np.ndarray, n_elite: int) -> float:

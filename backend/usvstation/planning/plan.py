@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import math
-import time
 from dataclasses import replace
 from typing import Any
 
@@ -11,8 +10,10 @@ import numpy as np
 from scipy import ndimage
 
 from usvstation.geometry import inflated_radius
+from usvstation.planning.budget import Budget, Clock, cpu_clock
 from usvstation.planning.encoding import GeneLayout, InfeasibleProblem
 from usvstation.planning.errors import NoFeasiblePlan
+from usvstation.planning.hull import keepout_circles, outline_clearance
 from usvstation.planning.iga import IGAResult, run_iga
 from usvstation.planning.limits import check_memory
 from usvstation.planning.model import Plan, PlanMetrics, SmoothedPath, Waypoint
@@ -29,15 +30,20 @@ MIN_WATER_M = 0.05  # least water between hull and obstacle a plan may keep, m
 
 
 def plan_scenario(
-    scenario: Scenario, planner: str = "iga", seed: int | None = None, **overrides: Any
+    scenario: Scenario, planner: str = "iga", seed: int | None = None,
+    started: float | None = None, clock: Clock = cpu_clock, **overrides: Any,
 ) -> Plan:
     """Plan `scenario`; return the plan or raise NoFeasiblePlan.
 
     Every plan returned has passed the exact validator (`plan_violations`):
     true hull clearance, first turn, speed through the water, timing margin.
-    The run stops at `planner.time_budget_s` with the best valid plan so far.
-    A plan whose memory estimate exceeds the bound raises PlanTooLarge
-    (`limits.check_memory`) before anything large is allocated.
+    All attempts (clearance margins, run-outs) share one budget
+    (planning/budget.py): `planner.max_evaluations` decides where the search
+    stops; past the wall-clock safety net `planner.time_budget_s` (counted
+    from `started`, a `clock()` value, default now) the best valid plan
+    so far is returned with a warning. A plan whose memory estimate exceeds
+    the bound raises PlanTooLarge (`limits.check_memory`) before anything
+    large is allocated.
     """
     if planner not in PLANNERS:
         raise ValueError(f"planner: unknown planner {planner!r}; available: {', '.join(PLANNERS)}")
@@ -45,7 +51,7 @@ def plan_scenario(
         overrides["seed"] = seed
     opts = scenario.planner_options(**overrides)
     check_memory(scenario, opts)
-    deadline = time.perf_counter() + opts.time_budget_s
+    budget = Budget(opts.evaluation_budget, opts.time_budget_s, clock, started)
     first: tuple[Problem, IGAResult] | None = None
     reasons: list[str] = []
     direct = not needs_prefix(scenario, opts)
@@ -61,13 +67,14 @@ def plan_scenario(
                 layout = GeneLayout.build(problem, opts)
                 blocked = run_in_blockers(problem, layout)
                 if blocked:  # no arrival along the ramp axis is free: no GA run can help
-                    names = ", ".join(f"obstacles[{i}]" for i in blocked)
+                    names = ", ".join(dict.fromkeys(obstacle_name(problem.obstacles, i)
+                                                    for i in blocked))
                     reasons.append(
                         f"the run-in along the ramp axis is blocked: {names} (inflated by "
                         f"eq. 7) cross every arrival within "
                         f"{math.degrees(math.atan(layout.cone_tan)):g} deg of the axis")
                     continue
-                result = run_iga(problem, opts, layout, deadline=deadline)
+                result = run_iga(problem, opts, layout, budget)
             except InfeasibleProblem as exc:
                 reasons.append(str(exc))
                 continue
@@ -79,19 +86,16 @@ def plan_scenario(
                     plan = plan.with_metrics(inflation_m=_r(margin), margin_kept=full)
                     if warning:  # the margin's warning comes first
                         plan = replace(plan, warnings=(warning, *plan.warnings))
-                    if result.stop_reason == "time_budget":
-                        plan = plan.warned(
-                            f"time budget of {opts.time_budget_s:g} s reached: best plan so far")
+                    if budget.time_fired:
+                        plan = plan.warned(budget.warning())
                     return plan
                 reasons.append("the exact check refused the best path: " + bad[0])
             first = first or (problem, result)
-            if time.perf_counter() > deadline:
+            if budget.exhausted():
                 break
-        if time.perf_counter() > deadline:
+        if budget.exhausted():
             break
-    head = "no feasible plan"
-    if time.perf_counter() > deadline:
-        head += f" within the time budget of {opts.time_budget_s:g} s"
+    head = "no feasible plan" + budget.failure()
     if first is None:
         raise NoFeasiblePlan(f"{head}: " + (reasons[0] if reasons else
                              "no collision-free way to turn the boat towards the goal"))
@@ -182,6 +186,9 @@ def build_plan(
         "time_margin_s": scenario.vessel.time_margin_s,
         "prefix_legs": 0 if prefix is None else prefix.legs,
     })
+    ship = outline_clearance(scenario, xs, ys)
+    if ship is not None:
+        metrics = metrics.updated(ship_clearance_m=_r(ship))
     sections = {
         "encoding": {
             "intermediate_waypoints": result.layout.n_mid,
@@ -216,7 +223,27 @@ def hull_field(scenario: Scenario) -> ObstacleField:
     v = scenario.vessel
     grown = f.radius + v.length / 2.0 + MIN_WATER_M
     c, w, r, infl, src = sweep_moving(f.centre, f.velocity, f.radius, grown, v.time_margin_s)
-    return ObstacleField(c, w, r, infl, src)
+    return with_ship(ObstacleField(c, w, r, infl, src), scenario, v.length / 2.0 + MIN_WATER_M)
+
+
+def with_ship(field: ObstacleField, scenario: Scenario, margin: float) -> ObstacleField:
+    """`field` and the mother ship's keep-out circles at `margin` (planning/hull.py), static,
+    raw radius 0, source -1."""
+    c, r = keepout_circles(scenario, margin)
+    if r.size == 0:
+        return field
+    src = field.source if field.source is not None else np.arange(field.count)
+    return ObstacleField(np.vstack([field.centre, c]),
+                         np.vstack([field.velocity, np.zeros_like(c)]),
+                         np.concatenate([field.radius, np.zeros_like(r)]),
+                         np.concatenate([field.inflated, r]),
+                         np.concatenate([src, np.full(r.size, -1)]))
+
+
+def obstacle_name(field: ObstacleField, i: int) -> str:
+    """How a failure names circle i of a field: `obstacles[k]` or the mother ship's hull."""
+    k = int(field.source[i]) if field.source is not None else i
+    return "the mother ship's hull" if k < 0 else f"obstacles[{k}]"
 
 
 def scenario_field(scenario: Scenario) -> ObstacleField:
@@ -235,8 +262,9 @@ def scenario_field(scenario: Scenario) -> ObstacleField:
 def explain_infeasible(problem: Problem, result: IGAResult) -> str:
     """Why no plan was found: an enclosed goal, or where candidate paths were blocked."""
     blocked = approach_blockers(problem, result)
+    f = problem.obstacles
     if blocked:
-        names = ", ".join(f"obstacles[{i}]" for i in blocked)
+        names = ", ".join(dict.fromkeys(obstacle_name(f, i) for i in blocked))
         return (
             f"the run-in along the ramp axis is blocked: {names} (inflated by eq. 7) "
             f"cross every arrival within {math.degrees(math.atan(result.layout.cone_tan)):g} deg "
@@ -244,7 +272,7 @@ def explain_infeasible(problem: Problem, result: IGAResult) -> str:
         )
     enclosed = enclosing_obstacles(problem)
     if enclosed is not None:
-        names = ", ".join(f"obstacles[{i}]" for i in enclosed)
+        names = ", ".join(dict.fromkeys(obstacle_name(f, i) for i in enclosed))
         return (
             f"the goal is enclosed: {names} (inflated by eq. 7) leave no free water "
             "between start and goal"
@@ -261,7 +289,7 @@ def explain_infeasible(problem: Problem, result: IGAResult) -> str:
     if report is not None and report.obstacle_hits is not None and report.obstacle_hits.any():
         top = np.argsort(-report.obstacle_hits)[:3]
         top = [int(i) for i in top if report.obstacle_hits[i] > 0]
-        parts.append("mostly by " + ", ".join(f"obstacles[{i}]" for i in top))
+        parts.append("mostly by " + ", ".join(dict.fromkeys(obstacle_name(f, i) for i in top)))
     return "; ".join(parts)
 
 

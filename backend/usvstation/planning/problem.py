@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from usvstation.geometry import inflated_radius
+from usvstation.planning.hull import keepout_circles
 from usvstation.planning.xyt import ObstacleField
 from usvstation.scenario import Scenario
 
@@ -89,6 +90,14 @@ class Problem:
         centre, velocity, radius, inflated, source = sweep_moving(
             centre, velocity, radius, inflated, tm
         )
+        full = inflated_radius(0.0, v.length, v.compensation_radius)
+        ship_c, ship_r = keepout_circles(scenario, full if margin is None else margin)
+        if ship_r.size:  # the mother ship's hull: static circles, source -1 (planning/hull.py)
+            centre = np.vstack([centre, ship_c])
+            velocity = np.vstack([velocity, np.zeros_like(ship_c)])
+            radius = np.concatenate([radius, np.zeros_like(ship_r)])
+            inflated = np.concatenate([inflated, ship_r])
+            source = np.concatenate([source, np.full(ship_r.size, -1)])
         rot = _rotation(-theta)
         field = ObstacleField(
             centre=(centre - np.array(offset)) @ rot.T,

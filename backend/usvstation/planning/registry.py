@@ -14,7 +14,6 @@ pydantic options model, and one `PlannerInfo` entry in `PLANNERS`.
 from __future__ import annotations
 
 import math
-import time
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 from typing import Any
@@ -23,12 +22,14 @@ import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from usvstation.geometry import angle_diff, inflated_radius
+from usvstation.planning.budget import Budget, BudgetExhausted, Clock, cpu_clock
 from usvstation.planning.errors import NoFeasiblePlan
 from usvstation.planning.model import Plan
 from usvstation.planning.seeds.common import (
     World,
     cruise_speed,
     finish_plan,
+    path_metrics,
     recovery_gates,
 )
 from usvstation.planning.validate import MOVING_START_SPEED, current_vector
@@ -52,7 +53,7 @@ class PlannerInfo:
     title: str
     capabilities: tuple[str, ...]
     options: type[BaseModel]
-    run: Callable[[Scenario, int, Any], Plan]
+    run: Callable[[Scenario, int, Any, float | None, Clock], Plan]
 
     def describe(self) -> dict[str, Any]:
         """The `GET /api/planners` entry: {name, paper, title, capabilities}."""
@@ -67,6 +68,15 @@ class SeedOptions(BaseModel):
     cruise_speed: float | None = Field(None, gt=0.0, description="m/s; default the start speed")
     attempts: int = Field(4, ge=1, le=50, description="seeds/gates tried before giving up")
     corner_cut_m: float = Field(6.0, gt=0.0, le=100.0)
+    time_budget_s: float = Field(
+        5.0, gt=0.0, le=600.0,
+        description="wall-clock safety net: past it the best plan so far (RRT*) with a "
+        "warning, or none")
+    max_evaluations: int | None = Field(
+        None, ge=1, le=50_000_000,
+        description="deterministic budget over all attempts: tree iterations (RRT*), "
+        "individuals evaluated (GAs), trial parameter sets (DE); default: the planner's own "
+        "options bound it")
 
 
 class RRTStarOptions(SeedOptions):
@@ -78,16 +88,17 @@ class RRTStarOptions(SeedOptions):
 
 def _drive(scenario: Scenario, seed: int, opts: SeedOptions, name: str,
            core: Callable[[Scenario, World, np.ndarray, float, np.random.Generator], tuple],
-           speeds_from: dict[str, Any] | None = None, static_only: bool = False
-           ) -> Plan:
+           speeds_from: dict[str, Any] | None = None, static_only: bool = False,
+           started: float | None = None, clock: Clock = cpu_clock) -> Plan:
     """Common attempt loop: gate (recovery), seed, clearance; first plan passing the checker.
 
     A planner whose paper knows only static obstacles (`static_only`) plans
     first against the movers' swept corridors (`World.swept_window`), then,
     if that finds nothing the timed checker accepts, against the movers
     timed at cruise speed; `metrics.obstacle_model` says which one gave the plan.
+    All attempts share one budget (planning/budget.py), carried by the worlds they plan in.
     """
-    t0 = time.perf_counter()
+    budget = Budget(opts.max_evaluations, opts.time_budget_s, clock, started)
     cruise = cruise_speed(scenario, opts.cruise_speed)
     v = scenario.vessel
     margins = (inflated_radius(0.0, v.length, v.compensation_radius), v.length)  # eq. 7, R_c = 0
@@ -101,24 +112,33 @@ def _drive(scenario: Scenario, seed: int, opts: SeedOptions, name: str,
         # another speed shifts every meeting in time: a way past a mover that crosses the
         # run-in at the boat's arrival, which a static-only method cannot see (PROPOSED)
         cruise = cruise_speed(scenario, base_cruise * SPEED_TRIES[attempt % len(SPEED_TRIES)])
-        world = World.from_scenario(scenario, margin)
+        world = World.from_scenario(scenario, margin, budget)
         gate = gates[attempt % len(gates)]
         target = np.array([scenario.goal.x, scenario.goal.y]) if gate is None else gate
         for model, seen in _obstacle_models(scenario, world, target, cruise, static_only):
+            if budget.exhausted():
+                break
             rng = np.random.default_rng([seed, attempt])
-            route, extra = core(scenario, seen, target, cruise, rng)
+            try:
+                route, extra = core(scenario, seen, target, cruise, rng)
+            except BudgetExhausted:
+                break
             if route is None:
                 last = extra.get("reason", last) if isinstance(extra, dict) else last
                 continue
             plan, last = _finish_attempt(scenario, route, extra, gate, speeds_from, name, seed,
-                                         cruise, t0, opts, attempt, margin, model, last)
+                                         cruise, budget, opts, attempt, margin, model, last)
             if plan is None:
                 continue
             if margin < margins[0]:
                 plan = plan.warned(f"reduced clearance: planned with {margin:g} m "
                                    f"instead of eq. 7's {margins[0]:g} m")
-            return plan
-    raise NoFeasiblePlan(f"no feasible plan: {name}: {last}")
+            plan = plan.with_metrics(evaluations=budget.evaluations,
+                                     stop_reason=budget.stop_reason() or "found")
+            return plan.warned(budget.warning()) if budget.time_fired else plan
+        if budget.exhausted():
+            break
+    raise NoFeasiblePlan(f"no feasible plan{budget.failure()}: {name}: {last}")
 
 
 SPEED_TRIES = (1.0, 1.3, 0.75, 1.0)  # cruise speed factor of attempt k (mod 4)
@@ -160,7 +180,7 @@ def _obstacle_models(scenario: Scenario, world: World, target: np.ndarray, cruis
 
 def _finish_attempt(scenario: Scenario, route: np.ndarray, extra: Any, gate: np.ndarray | None,
                     speeds_from: dict[str, Any] | None, name: str, seed: int, cruise: float,
-                    t0: float, opts: SeedOptions, attempt: int, margin: float, model: str,
+                    budget: Budget, opts: SeedOptions, attempt: int, margin: float, model: str,
                     last: str) -> tuple[Plan | None, str]:
     """The plan of one route (run-in appended, checked), or None and the checker's reason."""
     speeds = None
@@ -176,14 +196,14 @@ def _finish_attempt(scenario: Scenario, route: np.ndarray, extra: Any, gate: np.
             speeds = np.append(speeds, speeds[-1])
     for candidate in routes:
         try:
-            plan = finish_plan(scenario, candidate, name, seed, cruise, time.perf_counter() - t0,
+            plan = finish_plan(scenario, candidate, name, seed, cruise, budget.elapsed_s(),
                                {**(extra or {}), "attempts": attempt + 1,
                                 "inflation_m": round(margin, 6), "obstacle_model": model},
                                cut=opts.corner_cut_m, speeds=speeds)
         except NoFeasiblePlan as exc:
             last = str(exc).removeprefix("no feasible plan: ").removeprefix(f"{name}: ")
             continue
-        return plan.with_metrics(elapsed_s=round(time.perf_counter() - t0, 6)), last
+        return plan.with_metrics(elapsed_s=round(budget.elapsed_s(), 6)), last
     return None, last
 
 
@@ -211,24 +231,31 @@ def _rrt_family(kind: str) -> Callable[[Scenario, int, RRTStarOptions], dict[str
         if path is None:
             return None, {"reason": f"no tree branch reached the goal in {o.iterations} iterations"}
         raw_len = float(np.hypot(*np.diff(path, axis=0).T).sum())
-        if kind == "vpf":
-            path = vpf_path(path, world, cruise, ro)
+        if kind == "vpf":  # post-processing of a path found within the budget: bounded
+            path = vpf_path(path, replace(world, budget=None), cruise, ro)
         elif kind == "bspline":
             path = bspline_path(path, step / 3.0)
+        own = path_metrics(path)  # the algorithm's own path, before the common finish
         return path, {"tree_path_length_m": round(raw_len, 6), "step_m": round(step, 6),
-                      "iterations": o.iterations}
+                      "iterations": o.iterations,
+                      "algorithm_path_length_m": round(own["length_m"], 6),
+                      "algorithm_total_turn_deg": round(own["total_turn_deg"], 6)}
 
-    def run(sc: Scenario, seed: int, o: RRTStarOptions) -> Plan:
+    def run(sc: Scenario, seed: int, o: RRTStarOptions, started: float | None = None,
+            clock: Clock = cpu_clock) -> Plan:
         name = {"rrt": "rrt-star", "bspline": "bspline-rrt-star", "vpf": "vpf-rrt-star"}[kind]
-        return _drive(sc, seed, o, name, lambda *a: core(*a, o), static_only=True)
+        return _drive(sc, seed, o, name, lambda *a: core(*a, o), static_only=True,
+                      started=started, clock=clock)
 
     return run
 
 
-def _run_iga(scenario: Scenario, seed: int, options: Any) -> Plan:
+def _run_iga(scenario: Scenario, seed: int, options: Any, started: float | None = None,
+             clock: Clock = cpu_clock) -> Plan:
     from usvstation.planning.plan import plan_scenario
 
-    return plan_scenario(scenario, planner="iga", seed=seed, **options)  # checked there
+    return plan_scenario(scenario, planner="iga", seed=seed, started=started, clock=clock,
+                         **options)  # checked there
 
 
 class _IGAPassThrough(BaseModel):
@@ -271,24 +298,33 @@ class PlannerOptionError(ValueError):
     """Bad planner option; the message is one line naming the field."""
 
 
+BUDGET_OPTIONS = ("time_budget_s", "max_evaluations")  # every planner takes these
+
+
 def plan_with(scenario: Scenario, name: str = "iga", seed: int | None = None,
-         **options: Any) -> Plan:
-    """Plan with the named planner; the plan has passed the independent checker."""
+              started: float | None = None, clock: Clock = cpu_clock, **options: Any) -> Plan:
+    """Plan with the named planner; the plan has passed the independent checker.
+
+    Every planner honours the budget (`time_budget_s`, `max_evaluations`) given as an
+    option or in the scenario's `planner` section; its wall deadline counts from `started`
+    (a `clock()` value; default: now); tests inject `clock`.
+    """
     info = PLANNERS.get(name)
     if info is None:
         raise PlannerOptionError(
             f"planner: unknown planner {name!r}; available: {', '.join(PLANNERS)}")
     if name == "iga":
-        return info.run(scenario, seed, options)  # type: ignore[arg-type]
+        return info.run(scenario, seed, options, started, clock)  # type: ignore[arg-type]
     base = dict(scenario.planner.model_dump(exclude_unset=True)) if scenario.planner else {}
     seed = seed if seed is not None else int(base.get("seed", 1))
+    options = {**{k: base[k] for k in BUDGET_OPTIONS if k in base}, **options}
     try:
         opts = info.options(**options)
     except ValidationError as exc:
         err = exc.errors(include_url=False)[0]
         loc = ".".join(str(p) for p in err["loc"])
         raise PlannerOptionError(f"planner.{loc}: {err['msg']}") from None
-    return info.run(scenario, seed, opts)
+    return info.run(scenario, seed, opts, started, clock)
 
 
 class ColregsGAOptions(SeedOptions):
@@ -302,7 +338,8 @@ class ColregsGAOptions(SeedOptions):
     mode: str = Field("station", pattern="^(station|paper)$")
 
 
-def _run_colregs_ga(sc: Scenario, seed: int, o: ColregsGAOptions) -> Plan:
+def _run_colregs_ga(sc: Scenario, seed: int, o: ColregsGAOptions,
+                    started: float | None = None, clock: Clock = cpu_clock) -> Plan:
     import math
 
     from usvstation.planning.seeds.colregs_ga import PAPER_001_GA, GAStepOptions, plan_colregs_ga
@@ -327,7 +364,8 @@ def _run_colregs_ga(sc: Scenario, seed: int, o: ColregsGAOptions) -> Plan:
         stats["mode"] = o.mode
         return route, stats
 
-    return _drive(sc, seed, o, "colregs-ga", core, speeds_from=holder)
+    return _drive(sc, seed, o, "colregs-ga", core, speeds_from=holder, started=started,
+                  clock=clock)
 
 
 _register(PlannerInfo(
@@ -342,7 +380,8 @@ class ReplanGAOptions(SeedOptions):
     unsafe_range_m: float = Field(100.0, gt=0.0)
 
 
-def _run_replan_ga(sc: Scenario, seed: int, o: ReplanGAOptions) -> Plan:
+def _run_replan_ga(sc: Scenario, seed: int, o: ReplanGAOptions,
+                   started: float | None = None, clock: Clock = cpu_clock) -> Plan:
     from usvstation.planning.seeds.replan_ga import (
         PAPER_002_GA,
         Replanning,
@@ -360,7 +399,7 @@ def _run_replan_ga(sc: Scenario, seed: int, o: ReplanGAOptions) -> Plan:
         start = np.array([s.start.x, s.start.y])
         return plan_replan(start, target, world, cruise, _bounds(s, target, pad=None), rng, ro)
 
-    return _drive(sc, seed, o, "replan-ga", core)
+    return _drive(sc, seed, o, "replan-ga", core, started=started, clock=clock)
 
 
 class DEAPFOptionsModel(SeedOptions):
@@ -372,7 +411,8 @@ class DEAPFOptionsModel(SeedOptions):
     kappa: str = Field("paper", pattern="^(paper|chord)$")
 
 
-def _run_de_apf(sc: Scenario, seed: int, o: DEAPFOptionsModel) -> Plan:
+def _run_de_apf(sc: Scenario, seed: int, o: DEAPFOptionsModel,
+                started: float | None = None, clock: Clock = cpu_clock) -> Plan:
     from usvstation.planning.seeds.de_apf import DEAPFOptions, plan_de_apf
 
     def core(s: Scenario, world: World, target: np.ndarray, cruise: float,
@@ -384,7 +424,7 @@ def _run_de_apf(sc: Scenario, seed: int, o: DEAPFOptionsModel) -> Plan:
                           maxiter=o.maxiter, paper_kappa=o.kappa == "paper")
         return plan_de_apf(start, target, world, cruise, int(rng.integers(2**31)), do)
 
-    return _drive(sc, seed, o, "de-apf", core, static_only=True)
+    return _drive(sc, seed, o, "de-apf", core, static_only=True, started=started, clock=clock)
 
 
 _register(PlannerInfo(

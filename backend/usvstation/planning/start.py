@@ -20,6 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from usvstation.geometry import angle_diff
+from usvstation.planning.hull import keepout_circles
 from usvstation.planning.problem import StartState, sweep_moving
 from usvstation.planning.validate import MOVING_START_SPEED, current_vector
 from usvstation.planning.xyt import ObstacleField
@@ -124,15 +125,22 @@ def needs_prefix(scenario: Scenario, opts: IGAOptions) -> bool:
 def prefixes(scenario: Scenario, opts: IGAOptions, margin: float) -> list[Prefix]:
     """Collision-free run-outs for a start the IGA cannot leave directly, shortest first."""
     field = _field(scenario, margin)
-    out = []
-    for side in (1.0, -1.0):
-        p = _steer(scenario, opts, side)
-        if p is not None and _free(p, field):
-            out.append(p)
+    out: list[Prefix] = []
+    for scale in LEG_SCALES:  # shorter legs turn in less water (beside a ship's hull)
+        for side in (1.0, -1.0):
+            p = _steer(scenario, opts, side, scale)
+            if p is not None and _free(p, field):
+                out.append(p)
+        if out:
+            break
     return sorted(out, key=lambda p: p.end.t)
 
 
-def _steer(scenario: Scenario, opts: IGAOptions, side: float) -> Prefix | None:
+LEG_SCALES = (1.0, 0.5, 0.25)  # leg lengths tried, in multiples of the usual one
+
+
+def _steer(scenario: Scenario, opts: IGAOptions, side: float,
+           scale: float = 1.0) -> Prefix | None:
     """Legs whose course over ground turns by at most 0.6 turn_max per waypoint; each leg's
     ground speed is the one that makes `water` m/s through the water on it, and every
     waypoint's speed lies in the through-water window of both legs that meet there."""
@@ -144,7 +152,7 @@ def _steer(scenario: Scenario, opts: IGAOptions, side: float) -> Prefix | None:
     if drift >= 0.8 * water:  # make way against the current in every direction
         water = max(water, min(0.95 * v.speed_max, drift / 0.8))
     step = 0.6 * math.radians(v.turn_max_deg)
-    leg = max(3.0, 2.0 * v.length, 2.0 * water, 4.0 * drift)
+    leg = scale * max(3.0, 2.0 * v.length, 2.0 * water, 4.0 * drift)
     moving = s.speed >= MOVING_START_SPEED
     k = start_course(math.radians(s.heading_deg), s.speed, cx, cy) if moving else None
     x, y = s.x, s.y
@@ -247,7 +255,11 @@ def _field(scenario: Scenario, margin: float) -> ObstacleField:
     radius = np.array([o.radius for o in obs], dtype=float)
     c, w, r, infl, src = sweep_moving(centre, velocity, radius, radius + margin,
                                       scenario.vessel.time_margin_s)
-    return ObstacleField(c, w, r, infl, src)
+    ship_c, ship_r = keepout_circles(scenario, margin)  # the mother ship's hull (hull.py)
+    return ObstacleField(np.vstack([c, ship_c]), np.vstack([w, np.zeros_like(ship_c)]),
+                         np.concatenate([r, np.zeros_like(ship_r)]),
+                         np.concatenate([infl, ship_r]),
+                         np.concatenate([src, np.full(ship_r.size, -1)]))
 
 
 def _free(p: Prefix, field: ObstacleField) -> bool:

@@ -26,6 +26,7 @@ from typing import Any
 import numpy as np
 
 from usvstation.geometry import angle_diff
+from usvstation.planning.hull import outline_clearance
 from usvstation.scenario import Scenario
 
 TOL = 1e-6
@@ -45,7 +46,8 @@ def plan_violations(plan: dict[str, Any], scenario: Scenario) -> list[str]:
     (start speed >= 0.5 m/s); the hull never touches an obstacle circle; with
     the timing margin, not even when early or late by up to time_margin_s;
     a recovery arrives along the ramp axis (last segment within 10 degrees of
-    heading 180).
+    heading 180); the hull never touches the mother ship's hull while the boat's
+    centre is outside the approach corridor (planning/hull.py).
     """
     wps = plan["waypoints"]
     v = scenario.vessel
@@ -96,6 +98,11 @@ def plan_violations(plan: dict[str, Any], scenario: Scenario) -> list[str]:
     for i, j in zip(*np.nonzero(clear <= TOL), strict=True):
         out.append(f"segment {i}: hull {clear[i, j]:.3f} m from obstacles[{j}] "
                    "(touching or inside)")
+    ship = outline_clearance(scenario, np.array([w["x"] for w in wps]),
+                             np.array([w["y"] for w in wps]))
+    if ship is not None and ship <= TOL:
+        out.append(f"hull {ship:.3f} m from the mother ship's hull outside the approach "
+                   "corridor (touching or inside)")
     if v.time_margin_s > 0.0:
         swept = clearances(plan, scenario, margin_s=v.time_margin_s, moving_only=True)
         for (i, j), c in swept.items():

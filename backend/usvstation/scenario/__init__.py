@@ -16,6 +16,7 @@ from typing import Annotated, Any, Literal
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
 from usvstation.geometry import inflated_radius
+from usvstation.scenario.hull import start_refusal
 from usvstation.scenario.options import IGAOptions
 from usvstation.scenario.ships import MotherShip, TrafficShip
 
@@ -136,6 +137,9 @@ class Scenario(BaseModel):
             )
         if math.hypot(self.start.x - self.goal.x, self.start.y - self.goal.y) < 1.0:
             raise ValueError("goal: must lie at least 1 m from the start")
+        refusal = start_refusal(self)
+        if refusal:
+            raise ValueError(refusal)
         for field, point in (("start", self.start), ("goal", self.goal)):
             for i, obs in enumerate(self.obstacles):
                 r_l = inflated_radius(obs.radius, self.vessel.length,
@@ -151,6 +155,17 @@ class Scenario(BaseModel):
         """The scenario's planner options with `overrides` applied (validated)."""
         base = self.planner.model_dump(exclude_unset=True) if self.planner else {}
         return IGAOptions(**{**base, **overrides})
+
+    def with_budget(self, time_budget_s: float | None = None,
+                    max_evaluations: int | None = None) -> Scenario:
+        """A copy whose `planner` section carries this budget (every planner honours it);
+        None keeps the scenario's own."""
+        given = {k: v for k, v in (("time_budget_s", time_budget_s),
+                                   ("max_evaluations", max_evaluations)) if v is not None}
+        if not given:
+            return self
+        base = self.planner.model_dump(exclude_unset=True) if self.planner else {}
+        return self.model_copy(update={"planner": IGAOptions(**{**base, **given})})
 
 
 def scenario_at(

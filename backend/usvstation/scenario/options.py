@@ -11,6 +11,8 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
+EVALUATIONS_PER_INDIVIDUAL = 500  # default max_evaluations per member of the population
+
 
 class IGAOptions(BaseModel):
     """Tunable parameters of the IGA; every field can be set in a scenario's `planner`."""
@@ -101,8 +103,14 @@ class IGAOptions(BaseModel):
 
     time_budget_s: float = Field(
         5.0, gt=0.0, le=600.0,
-        description="wall-clock budget of one plan: past it the best feasible plan so far is "
-        "returned with a warning, or none",
+        description="wall-clock safety net of one plan: past it the best feasible plan so far "
+        "is returned with a warning, or none",
+    )
+    max_evaluations: int | None = Field(
+        None, ge=1, le=50_000_000,
+        description="deterministic budget of one plan: candidate paths evaluated, over all "
+        "its attempts (default 500 x population); the plan does not depend on the machine's "
+        "speed or load unless the wall-clock safety net fires first",
     )
 
     smoothing: bool = Field(True, description="add a B-spline smoothed path to the plan")
@@ -120,6 +128,11 @@ class IGAOptions(BaseModel):
                 "(Fit_d and Fit_T are the only terms that never vanish)"
             )
         return self
+
+    @property
+    def evaluation_budget(self) -> int:
+        """`max_evaluations`, or 500 x population when it is not set."""
+        return self.max_evaluations or EVALUATIONS_PER_INDIVIDUAL * self.population
 
     @property
     def elite_count(self) -> int:

@@ -7,11 +7,12 @@ courses are compass degrees over ground, speeds m/s.
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 _STRICT = ConfigDict(extra="forbid", strict=True, allow_inf_nan=False)
+Point = Annotated[list[float], Field(min_length=2, max_length=2, description="[x, y], m")]
 
 
 class LeverArm(BaseModel):
@@ -29,10 +30,16 @@ class LeverArm(BaseModel):
 
 
 class MotherShip(BaseModel):
-    """The mother ship under way at constant course and speed over ground.
+    """The mother ship under way at constant course and speed over ground, and its hull.
 
     Its heading follows from the scenario origin: heading = ramp_bearing_deg -
     lever_arm.ramp_bearing_offset_deg; `course_deg` may differ from it (drift).
+
+    The hull, in the ramp frame (issue 27): with `beam` it occupies x in
+    [-length, 0], |y| <= beam / 2, its stern at the ramp end; `outline` (a
+    polygon of [x, y] points) replaces that box. The ramp opening is
+    `ramp_width` wide, centred on the ramp axis at the ramp end. Without
+    `beam` or `outline` the ship has no shape: the planners see the ramp alone.
     """
 
     model_config = _STRICT
@@ -41,6 +48,27 @@ class MotherShip(BaseModel):
     lever_arm: LeverArm = Field(default_factory=LeverArm)
     length: float = Field(60.0, gt=0.0, le=400.0)
     mmsi: int = Field(257000000, ge=100000000, le=999999999)
+    beam: float | None = Field(None, gt=0.0, le=100.0, description="m; the hull is a box")
+    ramp_width: float = Field(3.0, gt=0.0, le=50.0, description="m, the ramp opening")
+    outline: list[Point] | None = Field(
+        None, min_length=3, max_length=200,
+        description="hull polygon of [x, y] points in the ramp frame, m (replaces the box)")
+
+    @model_validator(mode="after")
+    def _shape(self) -> MotherShip:
+        if self.beam is not None and self.ramp_width >= self.beam:
+            raise ValueError(f"mother_ship.ramp_width: must be narrower than the beam "
+                             f"(got {self.ramp_width:g} m, beam {self.beam:g} m)")
+        if self.outline is not None:
+            if any(abs(c) > 2000.0 for p in self.outline for c in p):
+                raise ValueError("mother_ship.outline: every point within 2 km of the ramp end")
+            ring = self.outline
+            area = 0.5 * sum(a[0] * b[1] - b[0] * a[1]
+                             for a, b in zip(ring, ring[1:] + ring[:1], strict=True))
+            if abs(area) < 1.0:
+                raise ValueError("mother_ship.outline: the polygon encloses no area "
+                                 f"({abs(area):g} m^2)")
+        return self
 
 
 class Manoeuvre(BaseModel):

@@ -139,6 +139,8 @@ def plan_colregs_ga(start: np.ndarray, heading: float, speed0: float, target: np
                     watch: np.ndarray = watch, starboard_only: bool = starboard_only,
                     stand_on: bool = stand_on, reach: float = reach
                     ) -> tuple[np.ndarray, np.ndarray]:
+            world.spend(len(genes))
+            world.check_budget()
             a, r = genes[:, 0], genes[:, 1]
             v1 = np.clip(v + a, vmin, vmax)
             psi1 = psi + r

@@ -10,13 +10,15 @@ along the ramp axis, then asks the independent checker
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
 from usvstation.geometry import inflated_radius
+from usvstation.planning.budget import Budget
 from usvstation.planning.errors import NoFeasiblePlan
+from usvstation.planning.hull import keepout_circles, outline_clearance
 from usvstation.planning.model import Plan, PlanMetrics, Waypoint
 from usvstation.planning.validate import plan_violations
 from usvstation.planning.xyt import segments_hit_circles
@@ -25,7 +27,12 @@ from usvstation.scenario import Scenario
 
 @dataclass(frozen=True)
 class World:
-    """Obstacle circles of a scenario (frame of the scenario) with a planning inflation."""
+    """Obstacle circles of a scenario (frame of the scenario) with a planning inflation.
+
+    A world that carries the plan's `budget` checks it on every collision query and raises
+    BudgetExhausted once it is spent (the planner catches it): so no seed planner runs past
+    its budget, whatever its own options say.
+    """
 
     cx: np.ndarray
     cy: np.ndarray
@@ -33,19 +40,46 @@ class World:
     vy: np.ndarray
     radius: np.ndarray
     inflated: np.ndarray
+    budget: Budget | None = field(default=None, compare=False, repr=False)
+    ship: np.ndarray | None = field(default=None, compare=False, repr=False)  # hull.py circles
 
     @classmethod
-    def from_scenario(cls, scenario: Scenario, margin: float | None = None) -> World:
+    def from_scenario(cls, scenario: Scenario, margin: float | None = None,
+                      budget: Budget | None = None) -> World:
         """Circles inflated by `margin` (default paper 000 eq. 7: D_USV + R_c)."""
         v = scenario.vessel
         m = inflated_radius(0.0, v.length, v.compensation_radius) if margin is None else margin
         obs = scenario.obstacles
         arr = np.array([[o.x, o.y, o.vx, o.vy, o.radius] for o in obs], float).reshape(-1, 5)
-        return cls(arr[:, 0], arr[:, 1], arr[:, 2], arr[:, 3], arr[:, 4], arr[:, 4] + m)
+        inflated = arr[:, 4] + m
+        ship_c, ship_r = keepout_circles(scenario, m)
+        if ship_r.size:  # the mother ship's hull: static circles of raw radius 0
+            z = np.zeros((ship_r.size, 5))
+            z[:, :2] = ship_c
+            arr, inflated = np.vstack([arr, z]), np.concatenate([inflated, ship_r])
+        ship = np.arange(len(arr)) >= len(obs)
+        return cls(arr[:, 0], arr[:, 1], arr[:, 2], arr[:, 3], arr[:, 4], inflated, budget,
+                   ship)
+
+    def spend(self, n: int) -> None:
+        """Count `n` evaluations against the budget (none without one)."""
+        if self.budget is not None:
+            self.budget.spend(n)
+
+    def check_budget(self) -> None:
+        """Raise BudgetExhausted when the budget is spent or its wall deadline passed."""
+        if self.budget is not None:
+            self.budget.check()
 
     @property
     def count(self) -> int:
         return int(self.cx.size)
+
+    def subset(self, keep: np.ndarray) -> World:
+        """The circles where `keep` is True (same budget)."""
+        return World(self.cx[keep], self.cy[keep], self.vx[keep], self.vy[keep],
+                     self.radius[keep], self.inflated[keep], self.budget,
+                     None if self.ship is None else self.ship[keep])
 
     @property
     def moving(self) -> np.ndarray:
@@ -68,6 +102,7 @@ class World:
         still = ~self.moving
         cx, cy, r, ri = [self.cx[still]], [self.cy[still]], [self.radius[still]], \
             [self.inflated[still]]
+        ship = [self._ship_mask()[still]]
         for i in np.flatnonzero(self.moving):
             speed = math.hypot(self.vx[i], self.vy[i])
             n = 2 + math.ceil(speed * horizon_s / max(0.7 * self.inflated[i], 0.25))
@@ -78,15 +113,21 @@ class World:
                 (d <= s * cruise * fast + self.inflated[i])
             cx.append(px[keep])
             cy.append(py[keep])
+            ship.append(np.zeros(int(keep.sum()), bool))
             r.append(np.full(int(keep.sum()), self.radius[i]))
             ri.append(np.full(int(keep.sum()), self.inflated[i]))
         cxa, cya = np.concatenate(cx), np.concatenate(cy)
         z = np.zeros_like(cxa)
-        return World(cxa, cya, z, z.copy(), np.concatenate(r), np.concatenate(ri))
+        return World(cxa, cya, z, z.copy(), np.concatenate(r), np.concatenate(ri), self.budget,
+                     np.concatenate(ship))
+
+    def _ship_mask(self) -> np.ndarray:
+        return np.zeros(self.count, bool) if self.ship is None else self.ship
 
     def segments_hit(self, p0: np.ndarray, t0: np.ndarray, p1: np.ndarray, t1: np.ndarray,
                      radius: np.ndarray | None = None) -> np.ndarray:
         """(N,) True where segment i (timed, paper 000 eq. 9) enters any inflated circle."""
+        self.check_budget()
         if self.count == 0:
             return np.zeros(len(p0), dtype=bool)
         r = self.inflated if radius is None else radius
@@ -101,6 +142,7 @@ class World:
 
     def points_free(self, p: np.ndarray, t: np.ndarray | float) -> np.ndarray:
         """(N,) True where point i at time t_i lies outside every inflated circle."""
+        self.check_budget()
         p = np.asarray(p, float).reshape(-1, 2)
         if self.count == 0:
             return np.ones(len(p), dtype=bool)
@@ -111,6 +153,7 @@ class World:
 
     def distance(self, p: np.ndarray, t: np.ndarray | float) -> np.ndarray:
         """(N, M) distance from point i at time t_i to obstacle j's inflated edge."""
+        self.check_budget()
         p = np.asarray(p, float).reshape(-1, 2)
         t = np.broadcast_to(np.asarray(t, float), (len(p),))
         dx = p[:, 0, None] - (self.cx + self.vx * t[:, None])
@@ -245,20 +288,23 @@ def recovery_gates(scenario: Scenario, world: World) -> list[np.ndarray]:
     """Candidate run-in gates (g, 0) on the ramp axis; from each the boat runs straight in.
 
     A gate is kept when it and the straight run-in to the ramp end are clear
-    of static obstacles; nearest-first distances 15, 10, 20, 6, 30 m (within
-    the start's distance out).
+    of static obstacles (the mother ship's hull included); nearest-first
+    distances 15, 10, 20, 6, 30 m, within the start's distance out, or any of
+    them for a start that is not out at sea (behind or beside the ramp: the
+    boat goes out to the gate first).
     """
+    static = world.subset(~world.moving)
     out = []
     for g in (15.0, 10.0, 20.0, 6.0, 30.0, 4.0):
-        if g >= scenario.start.x - 1.0:
-            continue
         p = np.array([[g, 0.0], [0.0, 0.0]])
-        static = World(world.cx[~world.moving], world.cy[~world.moving],
-                       world.vx[~world.moving], world.vy[~world.moving],
-                       world.radius[~world.moving], world.inflated[~world.moving])
         if not static.segments_hit(p[:1], 0.0, p[1:], 1.0)[0]:
             out.append(p[0])
-    return out or [np.array([min(10.0, scenario.start.x / 2.0), 0.0])]
+    ahead = [p for p in out if p[0] < scenario.start.x - 1.0]
+    if ahead:
+        return ahead
+    if out and scenario.start.x < out[0][0]:
+        return out
+    return [np.array([max(min(10.0, scenario.start.x / 2.0), 1.0), 0.0])]
 
 
 def path_metrics(pts: np.ndarray) -> dict[str, float]:
@@ -327,6 +373,9 @@ def _assemble(scenario: Scenario, pts: np.ndarray, t: np.ndarray, v: np.ndarray,
         "elapsed_s": round(elapsed_s, 6),
         "arrival_heading_deg": _r(float(h[-1])),
     }
+    ship = outline_clearance(scenario, pts[:, 0], pts[:, 1])
+    if ship is not None:
+        metrics["ship_clearance_m"] = _r(ship)
     metrics.update(extra or {})
     plan = Plan(planner, scenario.name, seed, tuple(waypoints), PlanMetrics(metrics))
     bad = plan_violations(plan.to_document(), scenario)
@@ -336,7 +385,9 @@ def _assemble(scenario: Scenario, pts: np.ndarray, t: np.ndarray, v: np.ndarray,
 
 
 def min_clearance(pts: np.ndarray, t: np.ndarray, world: World, half_hull: float) -> float | None:
-    """Least water between the hull and an obstacle edge over the timed polyline, m."""
+    """Least water between the hull and an obstacle edge over the timed polyline, m (the
+    mother ship's keep-out circles are not obstacles: `ship_clearance_m` measures it)."""
+    world = world.subset(~world._ship_mask())
     if world.count == 0:
         return None
     dt = np.diff(t)[:, None]

@@ -194,6 +194,8 @@ def plan_de_apf(start: np.ndarray, goal: np.ndarray, world: World, cruise: float
 
     def objective(x: np.ndarray) -> np.ndarray:
         x = np.atleast_2d(x.T).T if x.ndim == 1 else x
+        world.spend(x.shape[1])
+        world.check_budget()
         rng = np.random.default_rng([seed, x.shape[1]])
         paths, ok, _ = rollout(x, start, goal, world, cruise, o, rng)
         return -score(paths, ok, goal, world, cruise, o.step, influence)

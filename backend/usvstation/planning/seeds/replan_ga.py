@@ -19,11 +19,11 @@ is measured.
 
 from __future__ import annotations
 
-import time
 from dataclasses import dataclass
 
 import numpy as np
 
+from usvstation.planning.budget import wall_clock
 from usvstation.planning.seeds.common import GeneticOperators, World
 
 PENALTY_M = 1e4
@@ -60,6 +60,7 @@ def _evaluate(paths: np.ndarray, world: World, cruise: float, t0: float) -> tupl
     length = seg.sum(axis=1)
     t = t0 + np.concatenate([np.zeros((len(paths), 1)), np.cumsum(seg, axis=1)], axis=1) / cruise
     n, s = seg.shape
+    world.spend(len(paths))
     hits = world.segments_hit(paths[:, :-1].reshape(-1, 2), t[:, :-1].ravel(),
                               paths[:, 1:].reshape(-1, 2), t[:, 1:].ravel()).reshape(n, s)
     nh = hits.sum(axis=1)
@@ -111,10 +112,7 @@ def plan_replan(start: np.ndarray, goal: np.ndarray, world: World, cruise: float
                 o: ReplanOptions) -> tuple[np.ndarray | None, dict]:
     """Global GA on the static map, then sail and re-plan locally; the executed route."""
     static = ~world.moving
-    sw = World(world.cx[static], world.cy[static], world.vx[static], world.vy[static],
-               world.radius[static], world.inflated[static])
-    mw = World(world.cx[~static], world.cy[~static], world.vx[~static], world.vy[~static],
-               world.radius[~static], world.inflated[~static])
+    sw, mw = world.subset(static), world.subset(~static)
     route, nh = ga_path(start, goal, sw, cruise, 0.0, bounds, o.generations_global, rng, o)
     latencies: list[float] = []
     done = [start.copy()]
@@ -128,15 +126,14 @@ def plan_replan(start: np.ndarray, goal: np.ndarray, world: World, cruise: float
             near = np.hypot(mw.cx + mw.vx * t - pos[0], mw.cy + mw.vy * t - pos[1]) \
                 <= o.replanning.unsafe_range_m + mw.inflated
             if near.any():
-                sub = World(mw.cx[near], mw.cy[near], mw.vx[near], mw.vy[near],
-                            mw.radius[near], mw.inflated[near])
+                sub = mw.subset(near)
                 within = tt[:-1] - t < o.replanning.horizon_s
                 hit = sub.segments_hit(rest[:-1], tt[:-1], rest[1:], tt[1:]) & within
                 if hit.any():
-                    t0 = time.perf_counter()
+                    t0 = wall_clock()
                     new, nh = ga_path(pos, goal, world, cruise, t, bounds, o.generations_local,
                                       rng, o, seed_paths=[_resample(rest, o.waypoints)])
-                    latencies.append(time.perf_counter() - t0)
+                    latencies.append(wall_clock() - t0)
                     if np.hypot(*(done[-1] - pos)) > 1e-6:
                         done.append(pos.copy())  # the route turns where it was re-planned
                     remaining = new[1:]

@@ -16,7 +16,7 @@ its parent edge stay clear.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from scipy.interpolate import make_interp_spline
@@ -50,7 +50,12 @@ class Tree:
 def rrt_star(start: np.ndarray, goal: np.ndarray, world: World, cruise: float,
              bounds: tuple[float, float, float, float], opts: RRTOptions,
              rng: np.random.Generator) -> np.ndarray | None:
-    """A path start -> goal (array (K, 2)) or None; Alg. 1 of paper 004 (with VPF if asked)."""
+    """A path start -> goal (array (K, 2)) or None; Alg. 1 of paper 004 (with VPF if asked).
+
+    One iteration is one evaluation of the world's budget; when the budget is spent the
+    tree stops growing and its best branch to the goal so far is the path (anytime).
+    """
+    budget, world = world.budget, replace(world, budget=None)  # checked once per iteration
     cap = opts.iterations + 2
     tree = Tree(np.zeros((cap, 2)), np.full(cap, -1), np.zeros(cap), 1)
     tree.pts[0] = start
@@ -120,7 +125,11 @@ def rrt_star(start: np.ndarray, goal: np.ndarray, world: World, cruise: float,
             move *= opts.step / m
         return q + move
 
-    for it in range(opts.iterations):
+    for _ in range(opts.iterations):
+        if budget is not None:
+            if budget.exhausted():
+                break  # anytime: the best branch to the goal so far
+            budget.spend(1)
         if tree.n - kd_n >= opts.rebuild_every:
             kd, kd_n = cKDTree(tree.pts[:tree.n]), tree.n
         if rng.random() < opts.goal_bias:
@@ -183,7 +192,6 @@ def rrt_star(start: np.ndarray, goal: np.ndarray, world: World, cruise: float,
                 best_goal, best_cost = i, cost + dg
         elif best_goal >= 0:
             best_cost = tree.cost[best_goal] + float(np.hypot(*(goal - tree.pts[best_goal])))
-        del it
     if best_goal < 0:
         return None
     path = [goal]
