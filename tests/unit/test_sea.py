@@ -7,6 +7,8 @@ import math
 import socket
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from usvstation.scenario import ScenarioError, load_scenario, parse_scenario
 from usvstation.shipinputs.decode import SentenceDecoder, apply_reports
@@ -119,3 +121,37 @@ def test_simulated_sea_sends_udp_and_records_truth() -> None:
 
     bad, records = asyncio.run(main())
     assert bad == 0 and records >= 1
+
+
+@settings(max_examples=40)
+@given(st.floats(-170.0, 170.0), st.floats(0.0, 5.0), st.floats(0.5, 10.0),
+       st.floats(0.0, 40.0), st.floats(0.0, 60.0))
+def test_a_turning_mother_ship_sails_the_arc_its_velocity_integrates_to(
+        turn_deg, speed, rate, turn_at, t):
+    """The mother ship turns at its rate the shorter way round; its position is the integral
+    of its velocity (a fine Euler sum), its hull and the stern ramp turn with its course."""
+    doc = sea_scenario()
+    doc["mother_ship"] = {"speed": speed, "course_deg": 270.0, "turn_rate_deg_s": rate,
+                          "lever_arm": {"forward": -20.0},
+                          "manoeuvres": [{"t": turn_at, "course_deg": (270.0 + turn_deg) % 360.0}]}
+    model = SeaModel(parse_scenario(doc))
+    own = model.mother_at(t)
+    steps = max(1, int(t / 0.002))
+    e = n = 0.0
+    for i in range(steps):
+        mid = model.mother_at((i + 0.5) * t / steps)
+        e, n = e + mid.ve * t / steps, n + mid.vn * t / steps
+    start = model.mother_at(0.0)
+    assert (own.east - start.east, own.north - start.north) == pytest.approx((e, n), abs=2e-3)
+    done = min(max(t - turn_at, 0.0) * rate, abs(turn_deg))
+    expected = 270.0 + math.copysign(done, turn_deg)
+    assert (own.course_deg - expected + 180.0) % 360.0 - 180.0 == pytest.approx(0.0, abs=1e-6)
+    assert (own.heading_deg - own.course_deg + 180.0) % 360.0 - 180.0 == pytest.approx(
+        0.0, abs=1e-6)
+    bearing = model.ramp_bearing_at(t) - own.heading_deg - 180.0
+    assert (bearing + 180.0) % 360.0 - 180.0 == pytest.approx(0.0, abs=1e-6)
+    # the ramp end stays 20 m astern of the reference point, along the ship's heading
+    re, rn = model.ramp_at(t)
+    h = math.radians(own.heading_deg)
+    assert (re - own.east, rn - own.north) == pytest.approx((-20.0 * math.sin(h),
+                                                             -20.0 * math.cos(h)), abs=1e-9)

@@ -29,11 +29,29 @@ class LeverArm(BaseModel):
     ramp_bearing_offset_deg: float = Field(180.0, ge=-360.0, le=360.0)
 
 
+class Manoeuvre(BaseModel):
+    """At `t` seconds after the start: a new course and/or speed, taken at once."""
+
+    model_config = _STRICT
+    t: float = Field(ge=0.0, description="s after the start")
+    course_deg: float | None = Field(None, ge=-360.0, le=360.0)
+    speed: float | None = Field(None, ge=0.0, le=30.0)
+
+    @model_validator(mode="after")
+    def _something(self) -> Manoeuvre:
+        if self.course_deg is None and self.speed is None:
+            raise ValueError("manoeuvre: give course_deg, speed or both")
+        return self
+
+
 class MotherShip(BaseModel):
-    """The mother ship under way at constant course and speed over ground, and its hull.
+    """The mother ship under way, and its hull.
 
     Its heading follows from the scenario origin: heading = ramp_bearing_deg -
-    lever_arm.ramp_bearing_offset_deg; `course_deg` may differ from it (drift).
+    lever_arm.ramp_bearing_offset_deg; `course_deg` may differ from it (drift). It sails
+    `course_deg` at `speed` over ground; each of its timed `manoeuvres` (s after the start)
+    sets a new course (the ship turns to it at `turn_rate_deg_s`, its hull turning with its
+    course, so the stern ramp swings) and/or a new speed (at once).
 
     The hull, in the ramp frame (issue 27): with `beam` it occupies x in
     [-length, 0], |y| <= beam / 2, its stern at the ramp end; `outline` (a
@@ -48,6 +66,8 @@ class MotherShip(BaseModel):
     lever_arm: LeverArm = Field(default_factory=LeverArm)
     length: float = Field(60.0, gt=0.0, le=400.0)
     mmsi: int = Field(257000000, ge=100000000, le=999999999)
+    manoeuvres: list[Manoeuvre] = Field(default_factory=list, max_length=50)
+    turn_rate_deg_s: float = Field(2.0, gt=0.0, le=30.0, description="rate of a course change")
     beam: float | None = Field(None, gt=0.0, le=100.0, description="m; the hull is a box")
     ramp_width: float = Field(3.0, gt=0.0, le=50.0, description="m, the ramp opening")
     outline: list[Point] | None = Field(
@@ -56,6 +76,9 @@ class MotherShip(BaseModel):
 
     @model_validator(mode="after")
     def _shape(self) -> MotherShip:
+        times = [m.t for m in self.manoeuvres]
+        if times != sorted(times):
+            raise ValueError("mother_ship.manoeuvres: must be in time order")
         if self.beam is not None and self.ramp_width >= self.beam:
             raise ValueError(f"mother_ship.ramp_width: must be narrower than the beam "
                              f"(got {self.ramp_width:g} m, beam {self.beam:g} m)")
@@ -68,21 +91,6 @@ class MotherShip(BaseModel):
             if abs(area) < 1.0:
                 raise ValueError("mother_ship.outline: the polygon encloses no area "
                                  f"({abs(area):g} m^2)")
-        return self
-
-
-class Manoeuvre(BaseModel):
-    """At `t` seconds after the start: a new course and/or speed, taken at once."""
-
-    model_config = _STRICT
-    t: float = Field(ge=0.0, description="s after the start")
-    course_deg: float | None = Field(None, ge=-360.0, le=360.0)
-    speed: float | None = Field(None, ge=0.0, le=30.0)
-
-    @model_validator(mode="after")
-    def _something(self) -> Manoeuvre:
-        if self.course_deg is None and self.speed is None:
-            raise ValueError("manoeuvre: give course_deg, speed or both")
         return self
 
 

@@ -48,29 +48,53 @@ class ShipTruth:
     heading_deg: float
 
 
-def _legs(course_deg: float, speed: float, manoeuvres: list) -> list[tuple[float, float, float]]:
-    """(t_start, course, speed) legs from the initial motion and the timed manoeuvres."""
-    legs = [(0.0, course_deg, speed)]
+Leg = tuple[float, float, float, float]  # (t_start, course at t_start deg, turn deg/s, speed)
+
+
+def _legs(course_deg: float, speed: float, manoeuvres: list,
+          turn_rate_deg_s: float | None = None) -> list[Leg]:
+    """Legs from the initial motion and the timed manoeuvres: a new speed at once, a new
+    course at once (`turn_rate_deg_s` None, as scripted traffic) or by a turn at that rate
+    the shorter way round (the mother ship); a manoeuvre during a turn starts from where
+    the turn had got to."""
+    legs: list[Leg] = [(0.0, course_deg, 0.0, speed)]
+    target = course_deg
     for m in manoeuvres:
-        _, c, s = legs[-1]
-        legs.append((m.t, c if m.course_deg is None else m.course_deg,
-                     s if m.speed is None else m.speed))
+        while len(legs) > 1 and legs[-1][0] > m.t:
+            legs.pop()  # the end of a turn this manoeuvre interrupts
+        _, _, _, _, course_now, speed_now = _integrate(legs, m.t)
+        new_speed = speed_now if m.speed is None else m.speed
+        if m.course_deg is not None:
+            target = m.course_deg
+        delta = (target - course_now + 180.0) % 360.0 - 180.0
+        if turn_rate_deg_s is None or abs(delta) < 1e-9:
+            legs.append((m.t, course_now + delta, 0.0, new_speed))
+        else:
+            rate = math.copysign(turn_rate_deg_s, delta)
+            legs.append((m.t, course_now, rate, new_speed))
+            legs.append((m.t + abs(delta) / turn_rate_deg_s, course_now + delta, 0.0, new_speed))
     return legs
 
 
-def _integrate(legs: list[tuple[float, float, float]], t: float) -> tuple[float, float, float,
-                                                                          float, float, float]:
-    """Displacement (e, n), velocity (ve, vn), course and speed at t along constant legs."""
+def _integrate(legs: list[Leg], t: float) -> tuple[float, float, float, float, float, float]:
+    """Displacement (e, n), velocity (ve, vn), course and speed at t along the legs (a turn
+    at constant rate and speed sails a circular arc)."""
     e = n = 0.0
-    course, speed = legs[0][1], legs[0][2]
-    for i, (t0, c, s) in enumerate(legs):
+    course, speed = legs[0][1], legs[0][3]
+    for i, (t0, c, rate, s) in enumerate(legs):
         if t0 > t:
             break
         t1 = legs[i + 1][0] if i + 1 < len(legs) else math.inf
         dt = min(t, t1) - t0
-        ve, vn = compass_to_enu(s, c)
-        e, n = e + ve * dt, n + vn * dt
-        course, speed = c, s
+        if rate == 0.0:
+            ve, vn = compass_to_enu(s, c)
+            e, n = e + ve * dt, n + vn * dt
+        else:
+            w = math.radians(rate)
+            c0, c1 = math.radians(c), math.radians(c + rate * dt)
+            e += s / w * (math.cos(c0) - math.cos(c1))
+            n += s / w * (math.sin(c1) - math.sin(c0))
+        course, speed = c + rate * dt, s
     ve, vn = compass_to_enu(speed, course)
     return e, n, ve, vn, course % 360.0, speed
 
@@ -86,32 +110,60 @@ class SeaModel:
         self.mother: MotherShip | None = scenario.mother_ship
         self.traffic: list[TrafficShip] = list(scenario.traffic)
         self._traffic_legs = [_legs(s.course_deg, s.speed, s.manoeuvres) for s in self.traffic]
+        self._mother_legs: list[Leg] = []
         self._traffic_start = [tuple(float(v) for v in self.frame0.ramp_to_enu(s.start.x,
                                                                                 s.start.y))
                                for s in self.traffic]
-        self.heading_deg = 0.0
+        self.heading_deg = 0.0  # the mother ship's heading at t = 0
         self._ship0 = (0.0, 0.0)
         if self.mother is not None:
-            arm = self.mother.lever_arm
-            self.heading_deg = (o.ramp_bearing_deg - arm.ramp_bearing_offset_deg) % 360.0
-            h = math.radians(self.heading_deg)
+            m = self.mother
+            self.heading_deg = (o.ramp_bearing_deg - m.lever_arm.ramp_bearing_offset_deg) % 360.0
+            self._mother_legs = _legs(m.course_deg, m.speed, m.manoeuvres, m.turn_rate_deg_s)
             # the ramp end is at the origin at t = 0: the ship's reference lies back along the arm
-            self._ship0 = (-(arm.forward * math.sin(h) + arm.starboard * math.cos(h)),
-                           -(arm.forward * math.cos(h) - arm.starboard * math.sin(h)))
+            ae, an = self._arm(self.heading_deg)
+            self._ship0 = (-ae, -an)
+
+    def _arm(self, heading_deg: float) -> tuple[float, float]:
+        """The lever arm (ship's reference to the ramp end) in ENU at this heading."""
+        assert self.mother is not None
+        arm, h = self.mother.lever_arm, math.radians(heading_deg)
+        return (arm.forward * math.sin(h) + arm.starboard * math.cos(h),
+                arm.forward * math.cos(h) - arm.starboard * math.sin(h))
 
     def mother_at(self, t: float) -> ShipTruth | None:
+        """The mother ship's reference point (ENU), velocity, course, speed and heading; its
+        hull turns with its course."""
         if self.mother is None:
             return None
-        ve, vn = compass_to_enu(self.mother.speed, self.mother.course_deg)
-        return ShipTruth("own", self._ship0[0] + ve * t, self._ship0[1] + vn * t, ve, vn,
-                         self.mother.course_deg % 360.0, self.mother.speed, self.heading_deg)
+        e, n, ve, vn, course, speed = _integrate(self._mother_legs, t)
+        heading = (self.heading_deg + course - self.mother.course_deg) % 360.0
+        return ShipTruth("own", self._ship0[0] + e, self._ship0[1] + n, ve, vn, course, speed,
+                         heading)
 
     def ramp_at(self, t: float) -> tuple[float, float]:
-        """The ramp end's true ENU position at t (the origin when no mother ship moves)."""
-        if self.mother is None:
+        """The ramp end's true ENU position at t (the origin when there is no mother ship)."""
+        own = self.mother_at(t)
+        if own is None:
             return 0.0, 0.0
-        ve, vn = compass_to_enu(self.mother.speed, self.mother.course_deg)
-        return ve * t, vn * t
+        ae, an = self._arm(own.heading_deg)
+        return own.east + ae, own.north + an
+
+    def ramp_bearing_at(self, t: float) -> float:
+        """The compass bearing of the ramp frame's +x axis at t."""
+        own = self.mother_at(t)
+        if own is None:
+            return self.frame0.ramp_bearing_deg
+        return (own.heading_deg + self.mother.lever_arm.ramp_bearing_offset_deg) % 360.0
+
+    def ramp_velocity_at(self, t: float) -> tuple[float, float]:
+        """The ramp end's ENU velocity at t: the ship's plus its turn's swing of the arm."""
+        own = self.mother_at(t)
+        if own is None:
+            return 0.0, 0.0
+        dt = 1e-3
+        (e0, n0), (e1, n1) = self.ramp_at(t), self.ramp_at(t + dt)
+        return (e1 - e0) / dt, (n1 - n0) / dt
 
     def traffic_at(self, t: float) -> list[ShipTruth]:
         out = []
@@ -126,12 +178,12 @@ class SeaModel:
     def traffic_in_ramp_frame(self, t: float) -> np.ndarray:
         """(N, 4) rows x, y, rvx, rvy of the traffic in the ship-fixed ramp frame at t."""
         ramp_e, ramp_n = self.ramp_at(t)
-        mve, mvn = (compass_to_enu(self.mother.speed, self.mother.course_deg)
-                    if self.mother is not None else (0.0, 0.0))
+        mve, mvn = self.ramp_velocity_at(t)
+        frame = RampFrame(self.frame0.lat, self.frame0.lon, self.ramp_bearing_at(t))
         rows = []
         for s in self.traffic_at(t):
-            x, y = self.frame0.enu_to_ramp(s.east - ramp_e, s.north - ramp_n)
-            rvx, rvy = self.frame0.vector_to_ramp(s.ve - mve, s.vn - mvn)
+            x, y = frame.enu_to_ramp(s.east - ramp_e, s.north - ramp_n)
+            rvx, rvy = frame.vector_to_ramp(s.ve - mve, s.vn - mvn)
             rows.append((float(x), float(y), float(rvx), float(rvy)))
         return np.array(rows, dtype=float).reshape(-1, 4)
 

@@ -41,6 +41,9 @@ JUDGE_DT = 0.1  # s of simulated time between the judge's samples
 OPERATOR_DT = 0.5  # how often the mate looks at the console
 CONFIRM_DELAY_S = 4.0  # the mate's reaction to a proposed re-plan (replan = confirm)
 RESUME_EVERY_S = 5.0  # how often the mate tries RESUME on a boat that stopped on its own
+OTTER_LENGTH_M = 2.0  # the simulated boat (dynamics/params.py otter())
+OTTER_PLAN_SPEED = 2.0  # m/s: the fastest a trial plans the Otter (top speed 3.09 m/s)
+TURN_RATE_DEG_S = 2.0  # how fast the mother ship changes course
 CRUISE_GUESS = 1.2  # m/s: where traffic is placed on the boat's way before the plan exists
 TOKEN = "trial-operator-token-0123456789abcdef"
 BOAT_STATES = ("IDLE", "READY", "RUNNING", "HOLD", "DONE", "ABORTED", "FAILSAFE", "GO_AROUND")
@@ -52,6 +55,8 @@ class Conditions:
 
     base: str
     mother_ship_speed: float
+    mother_ship_turn_deg: float  # the ship's course change (deg, + to starboard) ...
+    mother_ship_turn_s: float  # ... begun at this time of the sea (s), at TURN_RATE_DEG_S
     traffic: str
     current: str
     current_speed: float
@@ -88,6 +93,8 @@ def draw_episode(spec: TrialSpec, index: int) -> Episode:
     base = pick(spec.base)
     cond = Conditions(
         base=base, mother_ship_speed=float(pick(f.mother_ship_speed)),
+        mother_ship_turn_deg=float(pick(f.mother_ship_turn_deg)),
+        mother_ship_turn_s=round(float(rng.uniform(10.0, 40.0)), 1),
         traffic=pick(f.traffic), current=pick(f.current),
         current_speed=float(pick(f.current_speed)),
         current_dir_deg=round(float(rng.uniform(0.0, 360.0)), 1),
@@ -116,10 +123,19 @@ def trial_scenario(base: Scenario, cond: Conditions, rng: np.random.Generator) -
     env = base.environment.model_copy(update={"current_speed": cond.current_speed,
                                               "current_dir_deg": cond.current_dir_deg})
     heading = (base.origin.ramp_bearing_deg - 180.0) % 360.0  # a stern ramp: +x astern
-    mother = {"speed": cond.mother_ship_speed, "course_deg": round(heading, 3)}
+    mother: dict[str, Any] = {"speed": cond.mother_ship_speed, "course_deg": round(heading, 3),
+                              "turn_rate_deg_s": TURN_RATE_DEG_S}
+    if cond.mother_ship_turn_deg:
+        mother["manoeuvres"] = [{"t": cond.mother_ship_turn_s, "course_deg": round(
+            (heading + cond.mother_ship_turn_deg) % 360.0, 3)}]
+    # the boat being recovered is the simulated Otter: the mate enters its length, and plans
+    # at speeds it makes good with room for the current and the ship's way
+    vessel = base.vessel.model_copy(update={
+        "length": OTTER_LENGTH_M, "speed_max": min(base.vessel.speed_max, OTTER_PLAN_SPEED)})
     data = base.model_dump(mode="json")
     data.update(name=f"{base.name}-trial", environment=env.model_dump(mode="json"),
-                mother_ship=mother, traffic=_traffic(base, cond, rng))
+                vessel=vessel.model_dump(mode="json"), mother_ship=mother,
+                traffic=_traffic(base, cond, rng))
     return Scenario(**data)
 
 
@@ -184,6 +200,22 @@ def _world_motion(ramp_bearing_deg: float, vx: float, vy: float) -> tuple[float,
 # ----------------------------------------------------------------------------------- judge
 
 
+@dataclass(frozen=True)
+class RampPose:
+    """The ramp frame in the vehicle's world plane: its origin and the anticlockwise angle
+    of its +x axis."""
+
+    x: float
+    y: float
+    theta: float
+
+    def to_ramp(self, x: float, y: float) -> tuple[float, float]:
+        """A world-plane point in this ramp frame."""
+        c, s = math.cos(self.theta), math.sin(self.theta)
+        dx, dy = x - self.x, y - self.y
+        return c * dx + s * dy, -s * dx + c * dy
+
+
 @dataclass
 class Judge:
     """Samples the truth every JUDGE_DT: the boat's true hull against the ships, the
@@ -207,31 +239,34 @@ class Judge:
             if state == "RUNNING" and self.started_at is None:
                 self.started_at = self.clock.now()
         truth = boat.vehicle.truth  # never what the boat measures
-        rx, ry = self._ramp_origin()
-        bx, by = truth.x - rx, truth.y - ry  # the boat in the ship-fixed ramp frame
-        half = self.scenario.vessel.length / 2.0
-        for ox, oy, radius in self._others(rx, ry):
+        ramp = self._ramp_pose()
+        bx, by = ramp.to_ramp(truth.x, truth.y)  # the boat in the ship-fixed ramp frame
+        true_hull = getattr(boat.vehicle, "true_params", None)
+        half = (true_hull.length if true_hull is not None else self.scenario.vessel.length) / 2
+        for ox, oy, radius in self._others(ramp):
             self.min_clearance_m = min(self.min_clearance_m,
                                        math.hypot(bx - ox, by - oy) - half - radius)
         if state == "DONE" and self.arrival is None:
-            heading_err = abs((math.degrees(truth.heading) - 180.0 + 180.0) % 360.0 - 180.0)
+            heading = math.degrees(truth.heading - ramp.theta)
+            heading_err = abs((heading - 180.0 + 180.0) % 360.0 - 180.0)
             self.arrival = (self.clock.now(), math.hypot(bx, by), heading_err)
 
     def _sea_time(self) -> float:
         sea = self.station.world.sea
         return sea.now() if sea is not None else self.clock.now()
 
-    def _ramp_origin(self) -> tuple[float, float]:
-        """Where the ramp end truly is, in the vehicle's world plane (the scenario origin's
-        ramp frame at t = 0)."""
+    def _ramp_pose(self) -> RampPose:
+        """Where the ramp truly is in the vehicle's world plane (the scenario origin's ramp
+        frame at t = 0): its end and the angle its +x axis has turned with the ship."""
         sea = self.station.world.sea
         if sea is None:
-            return 0.0, 0.0
-        e, n = sea.model.ramp_at(sea.now())
-        x, y = sea.model.frame0.enu_to_ramp(e, n)
-        return float(x), float(y)
+            return RampPose(0.0, 0.0, 0.0)
+        t = sea.now()
+        x, y = sea.model.frame0.enu_to_ramp(*sea.model.ramp_at(t))
+        turned = sea.model.ramp_bearing_at(t) - sea.model.frame0.ramp_bearing_deg
+        return RampPose(float(x), float(y), -math.radians(turned))  # compass is clockwise
 
-    def _others(self, rx: float, ry: float) -> list[tuple[float, float, float]]:
+    def _others(self, ramp: RampPose) -> list[tuple[float, float, float]]:
         """(x, y, radius) in the ship-fixed ramp frame of every ship and obstacle now: the
         ships of the simulated sea, and the scenario's obstacles as charted hazards (fixed
         over ground where the origin puts them at t = 0, moving with their own velocity),
@@ -242,9 +277,9 @@ class Judge:
         if sea is not None:
             for ship, truth in zip(sea.model.traffic, sea.model.traffic_at(t), strict=True):
                 x, y = sea.model.frame0.enu_to_ramp(truth.east, truth.north)
-                out.append((float(x) - rx, float(y) - ry, ship.length / 2.0))
+                out.append((*ramp.to_ramp(float(x), float(y)), ship.length / 2.0))
         for o in self.scenario.obstacles:
-            out.append((o.x + o.vx * t - rx, o.y + o.vy * t - ry, o.radius))
+            out.append((*ramp.to_ramp(o.x + o.vx * t, o.y + o.vy * t), o.radius))
         return out
 
     def outcome(self) -> str:

@@ -11,6 +11,7 @@ draws its conditions from.
 
     [families]                # one value drawn uniformly per episode from each list
     mother_ship_speed = [0.0, 0.5, 1.0]     # m/s, the ship's course along its heading
+    mother_ship_turn_deg = [0.0, -20.0, 30.0]  # a course change 10-40 s into the sea, 2 deg/s
     traffic = ["none", "crossing", "head_on", "overtaking", "turning"]
     current = ["steady", "step", "reversal"]
     current_speed = [0.0, 0.3]              # m/s, towards a drawn direction
@@ -58,6 +59,7 @@ class Families(BaseModel):
 
     model_config = ConfigDict(extra="forbid")
     mother_ship_speed: list[float] = Field(default_factory=lambda: [0.0])
+    mother_ship_turn_deg: list[float] = Field(default_factory=lambda: [0.0])
     traffic: list[str] = Field(default_factory=lambda: ["none"])
     current: list[str] = Field(default_factory=lambda: ["steady"])
     current_speed: list[float] = Field(default_factory=lambda: [0.0])
@@ -98,6 +100,13 @@ class Families(BaseModel):
     def _speeds(cls, v: list[float]) -> list[float]:
         if any(not 0.0 <= x <= 3.0 for x in _non_empty(v)):
             raise ValueError("speeds must be within 0-3 m/s")
+        return v
+
+    @field_validator("mother_ship_turn_deg")
+    @classmethod
+    def _turns(cls, v: list[float]) -> list[float]:
+        if any(not -90.0 <= x <= 90.0 for x in _non_empty(v)):
+            raise ValueError("turns must be within -90..90 degrees")
         return v
 
     @field_validator("sea_state")
