@@ -89,8 +89,9 @@ class Settings(BaseSettings):
     keep_alive_s: float = Field(5.0, gt=0.0, le=300.0, description="idle keep-alive time")
     plan_timeout_s: float = Field(10.0, gt=0.0, le=3600.0, description="wall-clock limit "
                                   "of one plan")
-    plan_memory_mb: int = Field(2048, ge=512, le=1 << 20, description="memory limit of a "
-                                "plan worker, MB")
+    plan_memory_mb: int = Field(2048, ge=1024, le=1 << 20, description="memory limit of a "
+                                "plan worker, MB (its address space: the compiled fitness "
+                                "kernel alone takes about 550 MB of it)")
     plan_queue: int = Field(32, ge=1, le=10_000, description="plans queued or running at "
                             "most (then 429)")
     nmea: list[str] = Field(

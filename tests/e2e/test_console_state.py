@@ -153,7 +153,7 @@ def test_a_run_ends_when_the_boat_reports_done_between_telemetry_frames(browser,
         started = c.post("/api/boat/command", json={"command": "start",
                                                  "mission_id": mission["id"]})
         assert started.status_code == 200, started.text
-        done = st.wait(f"/api/missions/{mission['id']}", "state", ("active",), 15)
+        done = st.wait(f"/api/missions/{mission['id']}", "state", ("active",), 120)
         assert done["state"] == "completed"
         runs = c.get("/api/runs").json()
         assert runs[-1]["state"] == "completed"

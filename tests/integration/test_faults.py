@@ -35,7 +35,8 @@ def _long_plan() -> dict:
                for i in range(150)]
     return {**base, "obstacles": base["obstacles"] + islands,
             "planner": {"population": 1000, "generations_max": 5000,
-                        "stall_generations": 5000, "time_budget_s": 600.0}}
+                        "stall_generations": 5000, "time_budget_s": 600.0,
+                        "max_evaluations": 50_000_000}}
 
 
 LONG_PLAN = _long_plan()

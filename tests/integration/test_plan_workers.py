@@ -5,12 +5,12 @@ import sys
 
 SCRIPT = """
 from usvstation.services.plans import init_worker
-init_worker(512)
+init_worker(1024)
 import numpy
 from usvstation.planning.plan import plan_scenario
 from usvstation.scenario import load_scenario
 try:
-    numpy.ones(612 * 131072)
+    numpy.ones(1124 * 131072)
     print("allocated")
 except MemoryError:
     print("MemoryError")
