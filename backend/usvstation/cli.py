@@ -180,6 +180,11 @@ def build_parser() -> argparse.ArgumentParser:
                        "counts, e.g. 40,120,200,280 (rrt-star's path/straight-line ratio)")
     bench.add_argument("--sweep-maps", type=int, default=30, metavar="N",
                        help="compare: maps per obstacle count in the sweep (default 30)")
+    bench.add_argument("--curves", metavar="BUDGETS",
+                       help="compare: cost-versus-time curves at these CPU-time budgets (s), "
+                       "e.g. 0.05,0.2,1: our RRT* (with --ompl: against OMPL's RRT*, BIT*, PRM*)")
+    bench.add_argument("--curve-maps", type=int, default=4, metavar="N",
+                       help="compare: maps of the curves (default 4)")
     _add_campaign_parser(sub)
     _add_trial_parser(sub)
     return parser
@@ -561,6 +566,8 @@ def _cmd_bench_compare(args: argparse.Namespace) -> int:
             track=not args.no_track,
             sweep=[int(c) for c in args.sweep.split(",")] if args.sweep else None,
             sweep_maps=args.sweep_maps,
+            curves=[float(b) for b in args.curves.split(",")] if args.curves else None,
+            curve_maps=args.curve_maps,
             progress=lambda msg: print(msg, file=sys.stderr, flush=True))
     except ValueError as exc:
         raise CliError(str(exc), EXIT_INVALID) from None

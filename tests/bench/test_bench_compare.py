@@ -1,6 +1,7 @@
 """`usv-station bench compare` end to end on a small cut: the JSON it promises, the tables."""
 
 import json
+from pathlib import Path
 
 from usvstation.cli import main
 
@@ -8,7 +9,7 @@ from usvstation.cli import main
 def test_bench_compare_json_and_markdown(tmp_path, capsys):
     rc = main(["bench", "compare", "--planners", "replan-ga,rrt-star", "--families",
                "recovery,traps", "--seeds", "1", "--hidden", "1", "--hidden-from", "1003",
-               "--sweep", "40", "--sweep-maps", "2"])
+               "--sweep", "40", "--sweep-maps", "2", "--curves", "0.3", "--curve-maps", "1"])
     assert rc == 0
     out = capsys.readouterr()
     result = json.loads(out.out)
@@ -33,6 +34,12 @@ def test_bench_compare_json_and_markdown(tmp_path, capsys):
         assert d["n"] >= 4 and d["ratio_median"] >= 1.0 and len(d["ratio_ci95"]) == 2
     (sweep,) = result["difficulty_sweep"]
     assert sweep["count"] == 40 and sweep["maps"] == 2 and sweep["ratio_median"] >= 1.0
+    curves = result["cost_curves"]  # OMPL's lines too with --ompl
+    # how far a CPU-time budget gets depends on the machine: the shape, not the values
+    assert curves["budgets_s"] == [0.3] and curves["planners"]["rrt-star"]["solved"] in ([0], [1])
+    from usvstation.bench.compare_plots import write_curves
+
+    assert Path(write_curves(curves, tmp_path)).read_text().startswith("<?xml")
     e = result["summary"]["rrt-star"]["recovery"]
     lo, hi = e["success_ci95"]
     assert lo <= e["success_rate"] <= hi

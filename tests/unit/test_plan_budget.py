@@ -104,3 +104,14 @@ def test_the_api_and_campaigns_hand_the_budget_to_every_planner():
                         max_evaluations=500, options={"rrt-star": {"max_evaluations": 50}})
     assert spec.planner_options("iga") == {"max_evaluations": 500}
     assert spec.planner_options("rrt-star") == {"max_evaluations": 50}
+
+
+def test_a_plan_request_carries_the_budget_and_refuses_a_bad_one():
+    from pydantic import ValidationError
+
+    from usvstation.api.models import PlanRequest
+
+    req = PlanRequest(planner="rrt-star", time_budget_s=2.0, max_evaluations=500)
+    assert (req.time_budget_s, req.max_evaluations) == (2.0, 500)
+    with pytest.raises(ValidationError, match="max_evaluations"):
+        PlanRequest(max_evaluations=0)

@@ -307,7 +307,8 @@ def run_compare(planners: list[str] | None = None, families: list[str] | None = 
                 progress: Callable[[str], None] | None = None,
                 plots: Path | None = None, ompl: bool = False, first_seed: int = 1,
                 hidden_from: int = HIDDEN_FROM, track: bool = True,
-                sweep: list[int] | None = None, sweep_maps: int = 30) -> dict[str, Any]:
+                sweep: list[int] | None = None, sweep_maps: int = 30,
+                curves: list[float] | None = None, curve_maps: int = 4) -> dict[str, Any]:
     """Every planner on every family; `ompl` adds OMPL RRT*, Informed RRT*, BIT* if installed.
 
     Planner seeds are first_seed .. first_seed + seeds - 1; each family has its public
@@ -356,12 +357,20 @@ def run_compare(planners: list[str] | None = None, families: list[str] | None = 
         if progress:
             progress(f"difficulty sweep over {sweep} obstacles, {sweep_maps} maps each")
         result["difficulty_sweep"] = difficulty_sweep(sweep, sweep_maps)
+    if curves:
+        if progress:
+            progress(f"cost-versus-time curves at {curves} s on {curve_maps} maps")
+        result["cost_curves"] = cost_curves(curves, curve_maps, ompl=ompl)
     if plots is not None:
         from usvstation.bench.compare_plots import write_plots
 
         scenarios = {sc.name: sc for fam in {r["family"] for r in rows}
                      for sc in family_scenarios(fam, hidden=0, dense_maps=1)}
         result["plots"] = write_plots(rows, plots, scenarios)
+        if "cost_curves" in result:
+            from usvstation.bench.compare_plots import write_curves
+
+            result["plots"].append(write_curves(result["cost_curves"], plots))
     return result
 
 
@@ -450,6 +459,42 @@ def difficulty_sweep(counts: list[int], maps: int, seed: int = 1,
         out.append({"count": count, "maps": maps, "planner": planner, "success": ok,
                     "ratio_median": round(float(np.median(ratios)), 4) if ratios else None,
                     "ratio_ci95": mean_ci(ratios)})
+    return out
+
+
+def cost_curves(budgets: list[float], maps: int, seed: int = 1,
+                ompl: bool = True) -> dict[str, Any]:
+    """Cost versus CPU-time budget on paper 004's map (the first `maps` of the dense family):
+    the raw path's length over the straight line, median over the maps, for our RRT* (one
+    try, anytime within `time_budget_s`) and OMPL's RRT*, BIT* and PRM* (a fresh planner
+    per budget; PRM* on OMPL's own wall-clock timer; with `ompl`), with the maps solved."""
+    from usvstation.bench.ompl_baseline import CURVE_PLANNERS, available, curve_in_process
+
+    scenarios = [dense_004(k % len(DENSE_PAIRS), k // len(DENSE_PAIRS)) for k in range(maps)]
+    costs: dict[str, list[list[float | None]]] = {"rrt-star": []}
+    for sc in scenarios:
+        straight = math.hypot(sc.start.x - sc.goal.x, sc.start.y - sc.goal.y)
+        row = []
+        for b in budgets:
+            try:
+                plan = plan_with(sc, "rrt-star", seed, iterations=200_000, attempts=1,
+                                 time_budget_s=b)
+                row.append(plan.metrics["tree_path_length_m"] / straight)
+            except NoFeasiblePlan:
+                row.append(None)
+        costs["rrt-star"].append(row)
+        for pl in (CURVE_PLANNERS if ompl and available() else ()):
+            res = curve_in_process(sc.model_dump(mode="json"), pl, seed, budgets)
+            got = res.get("costs", [None] * len(budgets))
+            costs.setdefault(f"ompl:{pl}", []).append(
+                [None if c is None else c / straight for c in got])
+    out: dict[str, Any] = {"budgets_s": budgets, "maps": maps, "planners": {}}
+    for pl, rows in costs.items():
+        cols = list(zip(*rows, strict=True))
+        out["planners"][pl] = {
+            "median_ratio": [round(float(np.median([c for c in col if c is not None])), 4)
+                             if any(c is not None for c in col) else None for col in cols],
+            "solved": [sum(c is not None for c in col) for col in cols]}
     return out
 
 

@@ -50,3 +50,29 @@ def write_plots(rows: list[dict[str, Any]], folder: Path,
         fig.tight_layout()
         written.append(save_svg(fig, folder / f"compare-box-{metric}.svg"))
     return written
+
+
+def write_curves(curves: dict[str, Any], folder: Path) -> str:
+    """Cost (path / straight line, median over maps) versus CPU-time budget, one line per
+    planner, as SVG; returns the file's path."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    folder.mkdir(parents=True, exist_ok=True)
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for name, c in curves["planners"].items():
+        pts = [(b, m) for b, m in zip(curves["budgets_s"], c["median_ratio"], strict=True)
+               if m is not None]
+        if pts:
+            ax.plot(*zip(*pts, strict=True), marker="o", label=name)
+    ax.set_xscale("log")
+    ax.set_xlabel("budget (s of CPU time)")
+    ax.set_ylabel("path length / straight line (median)")
+    ax.set_title(f"Paper 004 map, {curves['maps']} maps: cost versus budget")
+    ax.legend()
+    path = folder / "cost-vs-time.svg"
+    fig.savefig(path, format="svg", bbox_inches="tight")
+    plt.close(fig)
+    return str(path)

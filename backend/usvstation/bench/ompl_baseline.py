@@ -20,6 +20,7 @@ from typing import Any
 from usvstation.clock import Stopwatch
 
 OMPL_PLANNERS = ("RRTstar", "InformedRRTstar", "BITstar")
+CURVE_PLANNERS = ("RRTstar", "BITstar", "PRMstar")  # cost-versus-time curves (issue 27)
 
 
 def available() -> bool:
@@ -42,8 +43,22 @@ def run_in_process(scenario_json: dict[str, Any], planner: str, seed: int,
     return json.loads(lines[-1])
 
 
-def _plan(scenario_json: dict[str, Any], planner: str, seed: int, iterations: int
-          ) -> dict[str, Any]:
+def curve_in_process(scenario_json: dict[str, Any], planner: str, seed: int,
+                     budgets: list[float]) -> dict[str, Any]:
+    """OMPL `planner`'s best path length start -> goal (or run-in gate) after each CPU-time
+    budget (s), a fresh planner per budget, in one fresh process."""
+    out = subprocess.run(
+        [sys.executable, "-m", "usvstation.bench.ompl_baseline", planner, str(seed), "curve",
+         ",".join(f"{b:g}" for b in budgets)], input=json.dumps(scenario_json),
+        capture_output=True, text=True, timeout=600, check=False)
+    lines = [ln for ln in out.stdout.splitlines() if ln.startswith("{")]
+    if not lines:
+        return {"error": (out.stderr.strip().splitlines() or ["no output"])[-1]}
+    return json.loads(lines[-1])
+
+
+def _plan(scenario_json: dict[str, Any], planner: str, seed: int, iterations: int,
+          budgets: list[float] | None = None) -> dict[str, Any]:
     import numpy as np
     from ompl import base as ob
     from ompl import geometric as og
@@ -105,6 +120,9 @@ def _plan(scenario_json: dict[str, Any], planner: str, seed: int, iterations: in
     ss.setStartAndGoalStates(st, gl, 1.0)
     obj = ob.PathLengthOptimizationObjective(si)
     ss.setOptimizationObjective(obj)
+    if budgets is not None:
+        return {"costs": [_cost_after(ss, si, og, ob, planner, b) for b in budgets],
+                "budgets_s": budgets}
     p = getattr(og, planner)(si)
     ss.setPlanner(p)
     ss.setup()
@@ -130,8 +148,29 @@ def _plan(scenario_json: dict[str, Any], planner: str, seed: int, iterations: in
             "plan_time_ms": watch.elapsed() * 1000}
 
 
+def _cost_after(ss: Any, si: Any, og: Any, ob: Any, planner: str, budget: float) -> float | None:
+    """Length of the best exact solution a fresh `planner` finds within `budget` CPU s."""
+    ss.clear()
+    ss.setPlanner(getattr(og, planner)(si))
+    ss.setup()
+    if planner == "PRMstar":  # grows its roadmap on a thread of its own: OMPL's own timer
+        solved = ss.solve(budget)
+    else:
+        c0 = time.process_time()
+        solved = ss.solve(ob.PlannerTerminationCondition(
+            lambda: time.process_time() - c0 > budget))
+    if not solved or not ss.haveExactSolutionPath():
+        return None
+    return round(float(ss.getSolutionPath().length()), 4)
+
+
 if __name__ == "__main__":
     name, seed_s, iters = sys.argv[1], sys.argv[2], sys.argv[3]
-    if name not in OMPL_PLANNERS:
-        raise SystemExit(f"planner: one of {', '.join(OMPL_PLANNERS)}")
-    print(json.dumps(_plan(json.loads(sys.stdin.read()), name, int(seed_s), int(iters))))
+    if name not in OMPL_PLANNERS + CURVE_PLANNERS:
+        raise SystemExit(f"planner: one of {', '.join(OMPL_PLANNERS + CURVE_PLANNERS)}")
+    scenario = json.loads(sys.stdin.read())
+    if iters == "curve":
+        budgets = [float(b) for b in sys.argv[4].split(",")]
+        print(json.dumps(_plan(scenario, name, int(seed_s), 0, budgets)))
+    else:
+        print(json.dumps(_plan(scenario, name, int(seed_s), int(iters))))
