@@ -116,6 +116,12 @@ class ApproachProfile:
     crab: np.ndarray
     along: np.ndarray
     speed: np.ndarray
+    time: np.ndarray  # s to go on the profile from each sample
+
+    def time_at(self, distance: float) -> float:
+        steps = np.arange(len(self.time)) * PROFILE_STEP
+        return float(np.interp(distance, steps, self.time, right=self.time[-1] + (
+            distance - steps[-1]) / max(float(self.along[-1]), 0.3)))
 
     def at(self, distance: float) -> tuple[float, ApproachLine]:
         """(offset wanted, track) `distance` m out (beyond the samples: straight on)."""
@@ -165,6 +171,7 @@ class ApproachState:
     course: float  # measured course over ground (rad, ramp frame)
     sog: float
     final: bool = False  # cross_track is the crossing offset predicted beyond control
+    yaw_rate: float = 0.0  # measured (rad/s)
 
 
 class RampApproach:
@@ -183,8 +190,8 @@ class RampApproach:
                  limits: ArrivalLimits, water_speed: float, speed_max: float,
                  speed_min: float = 0.6, compass_bias=lambda: 0.0,
                  end_fraction: float = 0.6, margin: float = math.radians(1.5),
-                 turn_rate: float = math.radians(6.0), final_s: float = 5.0,
-                 heading_max: float = math.radians(40.0), lookahead_max: float = 5.0,
+                 turn_rate: float = math.radians(10.0), final_s: float = 5.0,
+                 heading_max: float = math.radians(50.0), lookahead_max: float = 5.0,
                  lookahead_min: float = 2.5, ki_ratio: float = 0.1, kappa: float = 2.0,
                  integral_zone: float = 0.5, reach: float = 120.0,
                  line_override: float | None = None) -> None:
@@ -219,7 +226,7 @@ class RampApproach:
         cx, cy = drift
         cn = abs(-cx * math.sin(self.arrival) + cy * math.cos(self.arrival))
         return min(max(self.water_speed, cn / math.sin(0.8 * self.heading_max)),
-                   self.speed_max)
+                   0.8 * self.speed_max)
 
     def heading_limit(self, distance: float, along: float) -> float:
         """delta_max: how far from the axis the hull may point `distance` m out: within
@@ -236,20 +243,26 @@ class RampApproach:
         ca = drift[0] * math.cos(self.arrival) + drift[1] * math.sin(self.arrival)
         cn = -drift[0] * math.sin(self.arrival) + drift[1] * math.cos(self.arrival)
         d = np.arange(int(self.reach / PROFILE_STEP) + 1) * PROFILE_STEP
-        # the hull follows the limit TURN_LAG seconds late: it is where the limit was then
-        to_go = d / max(u + ca, 0.5) + TURN_LAG
-        limit = np.minimum(self.end_heading + self.turn_rate * np.maximum(
-            to_go - self.final_s, 0.0), self.heading_max)
-        design = np.maximum(limit - self.margin, max(self.end_heading - self.margin,
-                                                     0.3 * self.limits.heading))
-        crab = np.clip(-math.asin(min(max(cn / u, -1.0), 1.0)), -design, design)
-        along = u * np.cos(crab) + ca
+        needed = -math.asin(min(max(cn / u, -1.0), 1.0))
+        end_design = max(self.end_heading - self.margin, 0.3 * self.limits.heading)
+        # time to go at each sample: first guessed with the hull crabbing as needed (up to
+        # heading_max), then from the along-axis speed of the crab the schedule allows
+        along = np.full_like(d, u * math.cos(min(abs(needed), self.heading_max)) + ca)
+        for _ in range(2):
+            to_go = np.concatenate(([0.0], np.cumsum(PROFILE_STEP / np.maximum(
+                along[1:], 0.3))))
+            # the hull follows the limit TURN_LAG seconds late: it is where the limit was
+            limit = np.minimum(self.end_heading + self.turn_rate * np.maximum(
+                to_go + TURN_LAG - self.final_s, 0.0), self.heading_max)
+            design = np.maximum(limit - self.margin, end_design)
+            crab = np.clip(needed, -design, design)
+            along = u * np.cos(crab) + ca
         lateral = u * np.sin(crab) + cn
         angle = np.arctan2(lateral, along)
         if self.line_override is not None:
             angle = np.full_like(angle, self.line_override)
         offset = np.concatenate(([0.0], -np.cumsum(PROFILE_STEP * np.tan(angle[:-1]))))
-        return ApproachProfile(u, offset, angle, crab, along, np.hypot(along, lateral))
+        return ApproachProfile(u, offset, angle, crab, along, np.hypot(along, lateral), to_go)
 
     def locate(self, pose: Pose) -> tuple[float, float]:
         """(distance to go along the axis, lateral offset left of the axis)."""
@@ -283,14 +296,14 @@ class RampApproach:
         if abs(off) > limit:
             heading = wrap_angle(self.arrival + math.copysign(limit, off))
             water = self._speed_for(chi, heading, water)
-        if distance <= self.final_s * max(line.along, 0.5):
+        if prof.time_at(distance) <= self.final_s:
             delta, water, e = self._final(distance, lateral, sog, course, prof.water_speed)
             heading = wrap_angle(self.arrival + delta)
             self.final = True
         reach = self.heading_limit(distance + TURN_LAG * along_now, along_now)
         self.state = ApproachState(distance, lateral, e, line, prof.feasible,
                                    angle_diff(pose.psi - bias, self.arrival), limit, reach,
-                                   course, sog, self.final)
+                                   course, sog, self.final, getattr(pose, "r", 0.0))
         cx, cy = self.drift.drift(heading, water)
         surge = water + cx * math.cos(heading) + cy * math.sin(heading)
         return GuidanceCommand(wrap_angle(heading + bias), max(surge, 0.0), self.goal, t, 0,
@@ -387,7 +400,7 @@ class ApproachGates:
         offset the boat predicts it cannot take out must stay well inside the tolerance."""
         if final:
             return 0.5 * self.limits.offset
-        return self.limits.offset * (0.5 + gate / 7.5)
+        return self.limits.offset * (0.5 + gate / 4.0)
 
     def check(self, st: ApproachState, nav_ok: bool) -> GateResult | None:
         """The result of the gate the boat has just crossed, or None (no gate crossed)."""
@@ -413,7 +426,9 @@ class ApproachGates:
         if abs(st.cross_track) > e_max:
             return f"{g}: cross-track {abs(st.cross_track):.2f} m > {e_max:.2f} m"
         h_max = st.heading_reach + math.radians(2.0)
-        if abs(st.heading_error) > h_max:
+        # where the heading will be once the turn the boat is in has taken effect
+        ahead = st.heading_error + st.yaw_rate * TURN_LAG
+        if abs(st.heading_error) > h_max and abs(ahead) > h_max:
             return (f"{g}: heading off {math.degrees(abs(st.heading_error)):.1f} deg > "
                     f"{math.degrees(h_max):.1f} deg")
         if st.sog > 1.3 * line.speed + 0.5 or st.sog < 0.3:

@@ -49,7 +49,6 @@ from dataclasses import dataclass, replace
 from usvstation.control.select import CONTROLLERS, make_controller
 from usvstation.dynamics import Environment, ThrustCommand, Vessel, VesselState, otter
 from usvstation.dynamics.params import HullMismatch, VesselParams
-from usvstation.geometry import angle_diff
 from usvstation.guidance import Trajectory
 from usvstation.guidance.approach import (
     ApproachGates,
@@ -75,7 +74,7 @@ OVER_CAPACITY = "current exceeds what the boat can hold: drifting"
 APPROACH_SPEED_MAX = 1.8  # m/s through the water on the final approach
 ESCAPE_SPEED = 1.5  # m/s over ground on a go-around's escape route
 BACK_OFF_TO = 12.0  # m: a go-around closer to the ramp first backs away to here
-BACK_OFF_SPEED = 0.5  # m/s astern over ground while backing away
+BACK_OFF_SPEED = 0.8  # m/s astern over ground while backing away
 ENTRY_MARGIN = 15.0  # m before the first gate: the approach line is joined from here
 
 
@@ -152,6 +151,7 @@ class DynamicVehicle:
         self._escape = None  # the escape route's guidance
         self._standby: tuple[float, float] | None = None
         self._held_from: str | None = None  # the go-around phase a HOLD interrupted
+        self._back_heading = heading  # the heading a go-around backs away on
         self._path: Trajectory | None = None  # the timed path being flown
         self._tau = 0.0  # mission time
         self._pending = 0.0  # boat time not yet simulated (less than one control period)
@@ -403,6 +403,8 @@ class DynamicVehicle:
     def _track(self, s: Measurement) -> _Command | None:
         if self.arrival is not None and self._approach is None and self._entering(s):
             self._begin_approach(s)
+            if self._phase == "go_around":
+                return None
         if self._approach is None:
             cmd = self._guide.update(s, self._tau)
             self._segment = cmd.segment
@@ -443,8 +445,8 @@ class DynamicVehicle:
         if not 0.0 < distance <= entry:
             return False
         wanted, _ = prof.at(distance)
-        if abs(lateral - wanted) > max(5.0, 0.5 * distance):
-            return False
+        if abs(lateral) > abs(wanted) + max(3.0, 0.15 * distance):
+            return False  # still coming in from the side: the plan brings it round first
         return self._path_left(s) <= 1.5 * entry + 20.0
 
     def _path_left(self, s: Measurement) -> float:
@@ -467,8 +469,13 @@ class DynamicVehicle:
             path.append((g[0] - d * c - off * sn, g[1] - d * sn + off * c))
         if self.path_check is not None and not self.path_check(
                 self._timed(path, prof.water_speed)):
-            self.bend_rejected = True  # keep to the plan's own final leg (the axis)
+            self.bend_rejected = True  # keep to the plan's own final leg (the axis) ...
             approach = self._new_approach(line_override=0.0)
+            first = self.arrival.gates[0]
+            if abs(prof.at(first)[0]) > self.gates.cross_track_limit(first):
+                # ... unless the drift carries it off the axis by more than a gate allows
+                self._start_go_around("approach path blocked by an obstacle")
+                return
         self._approach = approach
         self.gates.joined(distance)
 
@@ -485,6 +492,7 @@ class DynamicVehicle:
                 and self.sensors.fix_age < 1.0)
 
     def _start_go_around(self, reason: str) -> None:
+        self._back_heading = self._meas.psi
         self.go_around = reason
         self.go_arounds += 1
         self._phase = "go_around"
@@ -495,8 +503,8 @@ class DynamicVehicle:
         """Back off from the ramp when close, then fly the first clear escape route to
         the standby point."""
         if self._escape is None:
-            if self._backing_off(s):  # keep the heading, astern over ground
-                return _Command(s.psi, -BACK_OFF_SPEED, None)
+            if self._backing_off(s):  # the heading it had, astern over ground
+                return _Command(self._back_heading, -BACK_OFF_SPEED, None)
             self._plan_escape(s)
             if self._escape is None:
                 return None  # holding (standby) where it stopped
@@ -510,9 +518,7 @@ class DynamicVehicle:
         """True while a go-around close to the ramp must first back away from it."""
         a = self._arrival_heading()
         goal = self._wps[-1]
-        distance = -((s.x - goal.x) * math.cos(a) + (s.y - goal.y) * math.sin(a))
-        closing = s.sog * math.cos(angle_diff(s.cog, a))
-        return distance < BACK_OFF_TO and closing > -0.5 * BACK_OFF_SPEED
+        return -((s.x - goal.x) * math.cos(a) + (s.y - goal.y) * math.sin(a)) < BACK_OFF_TO
 
     def _plan_escape(self, s: Measurement) -> None:
         goal = (self._wps[-1].x, self._wps[-1].y)
