@@ -61,7 +61,7 @@ class ArrivalLimits:
     contact_offset: float = 0.5  # m: a contact beyond this is a bad arrival
     contact_heading: float = math.radians(8.0)
     gates: tuple[float, ...] = (30.0, 15.0, 5.0)  # m from the ramp end, descending
-    standby: float = 40.0  # m from the ramp end along the axis
+    standby: float = 50.0  # m from the ramp end along the axis
 
     def __post_init__(self) -> None:
         if not 0.0 < self.offset < self.contact_offset:

@@ -97,7 +97,7 @@ class Vessel(BaseModel):
     gates_m: list[float] = Field([30.0, 15.0, 5.0], min_length=1, max_length=8,
                                  description="approach gates: distances from the ramp end, "
                                  "descending, m")
-    standby_m: float = Field(40.0, gt=0.0, le=10000.0, description="the go-around's standby "
+    standby_m: float = Field(50.0, gt=0.0, le=10000.0, description="the go-around's standby "
                              "point: this far out from the ramp end on the axis, m")
 
     @model_validator(mode="after")

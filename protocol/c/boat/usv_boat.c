@@ -20,7 +20,7 @@
 static const float GATE_M[GATES] = {30.0f, 15.0f, 5.0f};
 #define GATE_JOIN_M 10.0f    /* a gate less than this inside where the final leg begins: skipped */
 #define ARRIVAL_OFFSET_M 0.3f
-#define STANDBY_M 40.0f      /* the go-around stands by at the first item this far back */
+#define STANDBY_M 50.0f      /* the go-around stands by at the first item this far back */
 #define BACK_OFF_M 12.0f     /* a go-around closer to the ramp first backs away to here */
 #define OVER_CAPACITY_M 5.0f /* keeping station this far off its point: over capacity */
 
