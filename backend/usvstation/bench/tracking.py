@@ -39,6 +39,7 @@ from usvstation.dynamics.kinematic import KinematicBoat
 from usvstation.dynamics.params import VesselParams, otter, trimaran
 from usvstation.dynamics.vessel import ThrustCommand, Vessel, VesselState
 from usvstation.geometry import angle_diff
+from usvstation.guidance.approach import obstacle_check
 from usvstation.guidance.compensation import DisturbancePredictor, DriftModel, EstimatedDrift
 from usvstation.guidance.los import AVLOSGuidance, LOSGuidance
 from usvstation.guidance.observer import DriftObserver, Measurement
@@ -278,20 +279,9 @@ def start_state(plan: dict[str, Any], params: VesselParams, env: Environment) ->
 
 def _path_check(scenario: Any) -> Callable[[Trajectory], bool] | None:
     """Clearance of a bent path against the scenario's obstacles (hull half-length margin)."""
-    if scenario is None or not scenario.obstacles:
+    if scenario is None:
         return None
-    half = 0.5 * scenario.vessel.length
-
-    def check(tr: Trajectory) -> bool:
-        ts = np.linspace(tr.start_time, tr.end_time, 400)
-        pos = tr.position_at(ts)
-        for ob in scenario.obstacles:
-            ox, oy = ob.x + ob.vx * ts, ob.y + ob.vy * ts
-            if np.min(np.hypot(pos[:, 0] - ox, pos[:, 1] - oy)) <= ob.radius + half:
-                return False
-        return True
-
-    return check
+    return obstacle_check(scenario.obstacles, 0.5 * scenario.vessel.length)
 
 
 def track_plan(plan: dict[str, Any], method: str, params: VesselParams, env: Environment,

@@ -42,7 +42,7 @@ and flies the first clear one.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -50,6 +50,7 @@ import numpy as np
 from usvstation.geometry import angle_diff, wrap_angle
 from usvstation.guidance.compensation import DriftModel
 from usvstation.guidance.los import GuidanceCommand, Pose, check_pose
+from usvstation.guidance.trajectory import Trajectory
 
 
 @dataclass(frozen=True)
@@ -458,3 +459,28 @@ def escape_routes(position: tuple[float, float], standby: tuple[float, float],
     if len(back) > 1:
         routes.append(back)
     return routes
+
+
+def obstacle_check(obstacles: Sequence, half_length: float,
+                   samples_per_s: float = 5.0) -> Callable[[Trajectory], bool] | None:
+    """A path check against moving circles (anything with x, y, radius, vx, vy: a scenario's
+    obstacles, at x + vx t, y + vy t at plan time t): True when the hull (`half_length`
+    around its centre) keeps clear of every circle all along the timed path. None when
+    there are no obstacles."""
+    if not obstacles:
+        return None
+    ox = np.array([o.x for o in obstacles])
+    oy = np.array([o.y for o in obstacles])
+    ovx = np.array([o.vx for o in obstacles])
+    ovy = np.array([o.vy for o in obstacles])
+    reach = np.array([o.radius for o in obstacles]) + half_length
+
+    def check(tr: Trajectory) -> bool:
+        n = max(int((tr.end_time - tr.start_time) * samples_per_s), 2) + 1
+        ts = np.linspace(tr.start_time, tr.end_time, n)
+        pos = tr.position_at(ts)
+        dx = pos[:, 0:1] - (ox[None, :] + ovx[None, :] * ts[:, None])
+        dy = pos[:, 1:2] - (oy[None, :] + ovy[None, :] * ts[:, None])
+        return bool(np.all(np.hypot(dx, dy) > reach[None, :]))
+
+    return check
