@@ -107,6 +107,7 @@ class DriftObserver:
         self._shaft = [0.0, 0.0]  # nominal shaft speeds of the propeller model (rad/s)
         self._started = False
         self._age = 0.0  # s since start
+        self.fast = (float(initial[0]), float(initial[1]))  # drift low-passed over FAST_S
 
     @property
     def estimate(self) -> tuple[float, float]:
@@ -116,6 +117,7 @@ class DriftObserver:
     @estimate.setter
     def estimate(self, value: tuple[float, float]) -> None:
         self.x[0], self.x[1] = float(value[0]), float(value[1])
+        self.fast = self.estimate
 
     @property
     def speed(self) -> float:
@@ -183,11 +185,18 @@ class DriftObserver:
         # trust a fix less in a hard turn and while the model has just started (its sway
         # and surge states are guesses then): transients are not drift
         self._age += dt
-        turning = (meas.r / TURN_RATE) ** 2 + (v / SLIP_SPEED) ** 2
+        # (a turn at station-keeping speed slips little: it counts in full there)
+        turning = (meas.r / TURN_RATE * min(meas.sog / 1.5, 1.0)) ** 2 + (v / SLIP_SPEED) ** 2
         settling = max(0.0, 1.0 - self._age / SETTLE_S) * 20.0
         R = np.eye(2) * self.noise**2 * (1.0 + turning + settling)
         S = H @ self.P @ H.T + R
         K = np.linalg.solve(S, H @ self.P).T
+        # the fast estimate: the drift this fix alone shows (the bias and the turn slip
+        # from the filter), low-passed over FAST_S: what station keeping reacts to
+        raw = z - H[:, 2:] @ self.x[2:]
+        a_f = 1.0 - math.exp(-dt / FAST_S)
+        self.fast = (self.fast[0] + a_f * (raw[0] - self.fast[0]),
+                     self.fast[1] + a_f * (raw[1] - self.fast[1]))
         self.x = self.x + K @ (z - H @ self.x)
         self.P = (np.eye(4) - K @ H) @ self.P
         self.P = 0.5 * (self.P + self.P.T)
@@ -200,3 +209,4 @@ NOMINAL_DT = 0.05  # s, the control period the process noise is stated for
 TURN_RATE = math.radians(6.0)  # rad/s: at this yaw rate a fix counts half
 SLIP_SPEED = 0.3  # m/s of modelled sway: at this slip a fix counts half
 SETTLE_S = 5.0  # s after start during which fixes count little
+FAST_S = 1.0  # s: the fast drift estimate's low-pass
