@@ -188,7 +188,7 @@ class RampApproach:
     """
 
     def __init__(self, goal: tuple[float, float], arrival: float, drift: DriftModel,
-                 limits: ArrivalLimits, water_speed: float, speed_max: float,
+                 limits: ArrivalLimits, speed: float, speed_max: float,
                  speed_min: float = 0.6, compass_bias=lambda: 0.0,
                  end_fraction: float = 0.6, margin: float = math.radians(1.5),
                  turn_rate: float = math.radians(10.0), final_s: float = 5.0,
@@ -200,9 +200,9 @@ class RampApproach:
         self.arrival = arrival
         self.drift = drift
         self.limits = limits
-        self.water_speed = water_speed
+        self.speed = speed  # wanted along the axis, over ground (relative to the ramp)
         self.speed_max = speed_max
-        self.speed_min = min(speed_min, water_speed)
+        self.speed_min = speed_min
         self.compass_bias = compass_bias
         self.end_heading = end_fraction * limits.heading
         self.margin = margin
@@ -222,12 +222,14 @@ class RampApproach:
         self.state: ApproachState | None = None
 
     def speed_for(self, drift: tuple[float, float]) -> float:
-        """Water speed on the approach: the nominal one, or more where the cross drift
-        needs it to be held with at most 0.8 x `heading_max` of crab."""
+        """Water speed on the approach: what makes good `speed` along the axis against the
+        drift along it, or more where the cross drift needs it to be held with at most
+        0.8 x `heading_max` of crab; within the speed range (0.8 x the top for reserve)."""
         cx, cy = drift
+        ca = cx * math.cos(self.arrival) + cy * math.sin(self.arrival)
         cn = abs(-cx * math.sin(self.arrival) + cy * math.cos(self.arrival))
-        return min(max(self.water_speed, cn / math.sin(0.8 * self.heading_max)),
-                   0.8 * self.speed_max)
+        return min(max(self.speed - ca, cn / math.sin(0.8 * self.heading_max),
+                       self.speed_min), 0.8 * self.speed_max)
 
     def heading_limit(self, distance: float, along: float) -> float:
         """delta_max: how far from the axis the hull may point `distance` m out: within
@@ -239,7 +241,7 @@ class RampApproach:
 
     def profile(self) -> ApproachProfile:
         """The approach path for the drift known now (sampled out to `reach` m)."""
-        drift = self.drift.drift(self.arrival, self.water_speed)
+        drift = self.drift.drift(self.arrival, self.speed)
         u = self.speed_for(drift)
         ca = drift[0] * math.cos(self.arrival) + drift[1] * math.sin(self.arrival)
         cn = -drift[0] * math.sin(self.arrival) + drift[1] * math.cos(self.arrival)
