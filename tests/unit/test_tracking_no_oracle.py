@@ -239,7 +239,7 @@ def test_table_iv_gains_act_changing_them_changes_the_response() -> None:
     vessel, env = cruising(), Environment()
     while vessel.state.t < 10.0:
         vessel.step(pilot.update(Cmd(1.0, 2.0), vessel.state, 0.05), env, 0.05)
-    kp0, kd0 = pilot.initial["heading"]
+    kp0, _ = pilot.initial["heading"]
     assert abs(pilot.heading_gains[0] / kp0 - 1.0) > 0.2  # moved by more than 20 %
 
 

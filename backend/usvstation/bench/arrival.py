@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import math
 import platform
+import re
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -38,7 +39,6 @@ from usvstation.dynamics.environment import Environment, WaveField
 from usvstation.dynamics.params import HullMismatch, otter
 from usvstation.geometry import angle_diff
 from usvstation.guidance.approach import ArrivalLimits
-from usvstation.guidance.compensation import DisturbancePredictor
 from usvstation.guidance.trajectory import Trajectory
 
 PLAN_SEEDS = (21, 22, 23, 24)
@@ -234,11 +234,8 @@ def _p95(values: list[float]) -> float | None:
     return round(float(np.percentile(values, 95)), 3) if values else None
 
 
-def run_family(family: Family, method: str, sensor: str,
-               flown: list[tuple[str, int, Any, dict[str, Any]]]) -> tuple[dict[str, Any],
-                                                                             list[Outcome]]:
-    outcomes = [fly(plan, scenario, family, method, sensor, seed=1000 * seed + k)
-                for k, (_, seed, scenario, plan) in enumerate(flown)]
+def _row(family: Family, method: str, sensor: str,
+         outcomes: list[Outcome]) -> tuple[dict[str, Any], dict[str, Any]]:
     crossings = [o for o in outcomes if o.offset is not None]
     row = {"family": family.name, "method": method, "sensor": sensor,
            "episodes": len(outcomes),
@@ -247,58 +244,129 @@ def run_family(family: Family, method: str, sensor: str,
            "bad": sum(o.kind == "bad" for o in outcomes),
            "p95_offset_m": _p95([o.offset for o in crossings]),
            "p95_heading_deg": _p95([o.heading for o in crossings])}
-    return row, outcomes
+    reasons: dict[str, int] = {}
+    for o in outcomes:
+        if o.kind == "go_around":  # "gate 15 m: cross-track 1.20 m > 1.27 m" -> cross-track
+            why = o.reason.split(":", 1)[-1] if o.reason.startswith("gate") else o.reason
+            key = re.sub(r"\s*[\d.]+.*$", "", why).strip()
+            reasons[key] = reasons.get(key, 0) + 1
+    other = {"family": family.name, "method": method, "sensor": sensor,
+             "marginal": sum(o.kind == "marginal" for o in outcomes),
+             "timeout": sum(o.kind == "timeout" for o in outcomes),
+             "go_around_at": _gates(outcomes), "go_around_why": dict(sorted(reasons.items()))}
+    return row, other
+
+
+def _gates(outcomes: list[Outcome]) -> dict[str, int]:
+    at: dict[str, int] = {}
+    for o in outcomes:
+        if o.kind == "go_around":
+            key = o.reason.split(":")[0] if o.reason.startswith("gate") else "entry"
+            at[key] = at.get(key, 0) + 1
+    return dict(sorted(at.items()))
+
+
+def run_family(family: Family, method: str, sensor: str,
+               flown: list[tuple[str, int, Any, dict[str, Any]]]) -> tuple[dict[str, Any],
+                                                                             list[Outcome]]:
+    """One row: every plan flown once (sensor seed from the plan seed and its index)."""
+    outcomes = [fly(plan, scenario, family, method, sensor, seed=1000 * seed + k)
+                for k, (_, seed, scenario, plan) in enumerate(flown)]
+    return _row(family, method, sensor, outcomes)[0], outcomes
+
+
+def _task(args: tuple[str, str, str, tuple[int, ...], tuple[str, ...]]) -> list[Outcome]:
+    family, method, sensor, seeds, scenarios = args
+    return run_family(FAMILIES[family], method, sensor, plans(seeds, scenarios))[1]
+
+
+QUICK = {"families": ("bench", "beam_2.5"), "methods": ("approach", "legacy"),
+         "sensors": ("rtk-moving-base", "gnss"), "seeds": (21,),
+         "scenarios": ("case1", "case2")}
 
 
 def run_arrival_bench(families: tuple[str, ...] | None = None,
                       methods: tuple[str, ...] = METHODS, sensors: tuple[str, ...] = SENSORS,
                       seeds: tuple[int, ...] = PLAN_SEEDS,
-                      scenarios: tuple[str, ...] = SCENARIOS,
+                      scenarios: tuple[str, ...] = SCENARIOS, quick: bool = False,
+                      workers: int = 1,
                       progress: Callable[[str], None] | None = None) -> dict[str, Any]:
-    """Everything `usv-station bench arrival` prints."""
+    """Everything `usv-station bench arrival` prints (`quick`: two families, two methods,
+    two sensors, two plans: a smoke test, not figures for the record)."""
     t0 = time.perf_counter()
+    if quick:
+        families = families or QUICK["families"]
+        methods, sensors = QUICK["methods"], QUICK["sensors"]
+        seeds, scenarios = QUICK["seeds"], QUICK["scenarios"]
     names = families or tuple(FAMILIES)
     unknown = [n for n in names if n not in FAMILIES]
     if unknown:
         raise ValueError(f"bench arrival: unknown family {unknown[0]!r}; available: "
                          f"{', '.join(FAMILIES)}")
-    flown = plans(seeds, scenarios)
+    tasks = [(name, method, sensor, seeds, scenarios)
+             for name in names for sensor in sensors for method in methods]
+    if workers > 1:
+        from concurrent.futures import ProcessPoolExecutor
+
+        with ProcessPoolExecutor(max_workers=workers) as pool:
+            results = list(pool.map(_task, tasks))
+    else:
+        results = []
+        for task in tasks:
+            if progress:
+                progress(f"arrival {task[0]} {task[1]} {task[2]}")
+            results.append(_task(task))
     rows, others = [], []
-    for name in names:
-        for sensor in sensors:
-            for method in methods:
-                if progress:
-                    progress(f"arrival {name} {method} {sensor}")
-                row, outcomes = run_family(FAMILIES[name], method, sensor, flown)
-                rows.append(row)
-                others.append({"family": name, "method": method, "sensor": sensor,
-                               "marginal": sum(o.kind == "marginal" for o in outcomes),
-                               "timeout": sum(o.kind == "timeout" for o in outcomes),
-                               "go_around_reasons": sorted({o.reason.split(":")[-1].strip()
-                                                            .split(" ")[0]
-                                                            for o in outcomes
-                                                            if o.kind == "go_around"})})
+    for (name, method, sensor, _, _), outcomes in zip(tasks, results, strict=True):
+        row, other = _row(FAMILIES[name], method, sensor, outcomes)
+        rows.append(row)
+        others.append(other)
     limits = ArrivalLimits()
     return {
         "rows": rows,
         "other_outcomes": others,
         "families": {n: FAMILIES[n].description for n in names},
+        "methods": {"approach": "compensated AV-LOS, then the ramp approach (gates, go-around)",
+                    "approach_ilos": "ILOS, then the ramp approach (gates, go-around)",
+                    "legacy": "compensated AV-LOS with its once-bent final approach, no gates "
+                              "(the boat before issue 24)"},
+        "sensors": {n: _describe(n) for n in sensors},
         "conditions": {
-            "plans": [f"{name} seed {seed}" for name, seed, _, _ in flown],
+            "plans": [f"{name} seed {seed}" for name in scenarios for seed in seeds],
             "plan_seeds": list(seeds), "tuning_seeds": list(TUNING_SEEDS),
-            "vessel": "otter", "sea_state": 3, "wave_dir_deg": 0.0,
+            "vessel": "otter (plans made for it, bench tracking's scenario_for_vessel)",
+            "sea_state": 3, "wave_dir_deg": 0.0,
             "arrival": {"offset_m": limits.offset,
                         "heading_deg": round(math.degrees(limits.heading), 3),
                         "bad_offset_m": limits.contact_offset,
                         "bad_heading_deg": round(math.degrees(limits.contact_heading), 3)},
             "gates_m": list(limits.gates), "standby_m": limits.standby,
-            "judge": "true hull state where it crosses the ramp end's line",
+            "judge": "the true hull where it crosses the ramp end's line (or stops on the "
+                     "ramp); a go-around followed for 20 s more (a crossing then counts)",
+            "quick": quick,
         },
         "elapsed_s": round(time.perf_counter() - t0, 2),
         "machine": {"python": platform.python_version(), "platform": platform.platform()},
     }
 
 
-def oracle_drift(params: Any, env: Environment, psi: float, speed: float) -> tuple[float, float]:
-    """The true drift (for reports only)."""
-    return DisturbancePredictor(params, env).drift(psi, speed)
+def _describe(sensor: str) -> str:
+    from usvstation.sim.sensors import sensor_profile
+
+    g = sensor_profile(sensor).gnss
+    kind = "relative to the ramp (moving-baseline RTK)" if g.relative else "absolute"
+    return (f"GNSS {kind}: {g.cep_m:.2f} m CEP ({g.white_std_m:g} m white, {g.bias_std_m:g} m "
+            f"wander over {g.bias_tau_s:g} s), {g.rate_hz:g} Hz, {g.latency_s:g} s latency; "
+            "compass 0.5 deg noise, 0.2 s lag")
+
+
+def render_markdown(result: dict[str, Any]) -> str:
+    """The RESULTS.md table of a saved `bench arrival --json` result."""
+    lines = ["| family | method | sensor | episodes | arrived | go-around | bad | "
+             "p95 offset m | p95 heading deg |", "|---|---|---|---|---|---|---|---|---|"]
+    for r in result["rows"]:
+        lines.append(f"| {r['family']} | {r['method']} | {r['sensor']} | {r['episodes']} | "
+                     f"{r['arrived']} | {r['go_around']} | {r['bad']} | "
+                     f"{r['p95_offset_m'] if r['p95_offset_m'] is not None else '-'} | "
+                     f"{r['p95_heading_deg'] if r['p95_heading_deg'] is not None else '-'} |")
+    return "\n".join(lines) + "\n"

@@ -12,9 +12,11 @@ estimate c: the water velocity it needs is w = v_d - c. In a current (estimate a
 (more than 135 deg off the bow: a current that reversed, or the point behind it), stern
 into it with astern thrust, which a twin-screw boat can give at once, within the astern
 capacity; it turns its bow back into the current at slack water (or when astern power
-is not enough), so in a steady current it may hold bow or stern first. The heading then follows the current as it
-turns, instead of being caught broadside. In slack water it goes for the point
-(`EstimatedDrift.solve`) and, close to it, keeps its heading and stops its propellers.
+is not enough), so in a steady current it may hold bow or stern first. The heading
+follows the current as it turns, instead of being caught broadside. In slack water it
+turns towards the point before it goes (`EstimatedDrift.solve`, the speed scaled by the
+cosine of the heading still to turn) and, close to it, keeps its heading and stops its
+propellers.
 
 `over_capacity` is true when the boat cannot hold: the estimated drift needs more than
 `capacity` x the top speed through the water, or the boat is more than `radius` (2 m)
@@ -130,7 +132,7 @@ class StationKeeper:
         wx, wy = vx - cx, vy - cy
         bow = math.atan2(wy, wx)
         stern = wrap_angle(bow + math.pi)
-        turn_bow, turn_stern = abs(angle_diff(bow, pose.psi)), abs(angle_diff(stern, pose.psi))
+        turn_bow = abs(angle_diff(bow, pose.psi))
         if not astern_ok or math.hypot(cx, cy) < self.weathervane_current:
             self.astern = False  # beyond astern power, or slack: the bow again
         elif not self.astern:  # what it must meet came round behind it: stern first

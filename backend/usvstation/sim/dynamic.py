@@ -49,6 +49,7 @@ from dataclasses import dataclass, replace
 from usvstation.control.select import CONTROLLERS, make_controller
 from usvstation.dynamics import Environment, ThrustCommand, Vessel, VesselState, otter
 from usvstation.dynamics.params import HullMismatch, VesselParams
+from usvstation.geometry import angle_diff
 from usvstation.guidance import Trajectory
 from usvstation.guidance.approach import (
     ApproachGates,
@@ -76,6 +77,7 @@ ESCAPE_SPEED = 1.5  # m/s over ground on a go-around's escape route
 BACK_OFF_TO = 12.0  # m: a go-around closer to the ramp first backs away to here
 BACK_OFF_SPEED = 0.8  # m/s astern over ground while backing away
 ENTRY_MARGIN = 15.0  # m before the first gate: the approach line is joined from here
+STRAIGHT_MARGIN = 5.0  # m: the approach takes over this far before the plan's final straight
 
 
 @dataclass(frozen=True)
@@ -447,7 +449,20 @@ class DynamicVehicle:
         wanted, _ = prof.at(distance)
         if abs(lateral) > abs(wanted) + max(3.0, 0.15 * distance):
             return False  # still coming in from the side: the plan brings it round first
-        return self._path_left(s) <= 1.5 * entry + 20.0
+        # only on the plan's final straight: before it, the plan's path is what keeps the
+        # boat clear of what the station knows and the boat does not (traffic, re-plans)
+        return self._path_left(s) <= self._final_straight() + STRAIGHT_MARGIN
+
+    def _final_straight(self) -> float:
+        """Length of the path's final straight: its last legs within 15 deg of the last."""
+        tr = self._path
+        last = tr.segment_heading(tr.segment_count - 1)
+        length = 0.0
+        for i in range(tr.segment_count - 1, -1, -1):
+            if abs(angle_diff(tr.segment_heading(i), last)) > math.radians(15.0):
+                break
+            length += tr.segment_length(i)
+        return length
 
     def _path_left(self, s: Measurement) -> float:
         """Path length from the boat's leg to the end of the path flown."""
