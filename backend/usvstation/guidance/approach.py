@@ -99,6 +99,7 @@ class ApproachLine:
 
 
 MIN_HEADWAY = 0.3  # m/s along the axis: below it the drift wins
+FINAL_HEADWAY = 0.6  # m/s along the axis at least in the final phase
 JOIN_MARGIN = 10.0  # m: a gate is checked only this far inside where the approach began
 MAX_LINE_ANGLE = math.radians(50.0)  # a steeper track cannot be flown onto the ramp
 PROFILE_STEP = 0.5  # m between the approach profile's samples
@@ -335,12 +336,14 @@ class RampApproach:
             vn = u * math.sin(crab) + cn
             return y + d * vn / va if va > MIN_HEADWAY else math.copysign(math.inf, vn)
 
+        # never so slow that the drift along the axis stops it short of the ramp
+        slowest = min(max(self.speed_min, FINAL_HEADWAY - ca), self.speed_max)
         den = math.sin(crab0) - k * math.cos(crab0)
         if abs(den) > 1e-9:
             u = (k * ca - cn) / den
-            if self.speed_min <= u <= self.speed_max:
+            if slowest <= u <= self.speed_max:
                 return crab0, u, 0.0
-        best = min((self.speed_min, self.speed_max), key=lambda u: abs(residual(crab0, u)))
+        best = min((slowest, self.speed_max), key=lambda u: abs(residual(crab0, u)))
         lo, hi = -h, h
         f_lo, f_hi = residual(lo, best), residual(hi, best)
         if f_lo * f_hi > 0.0:

@@ -49,7 +49,6 @@ from dataclasses import dataclass, replace
 from usvstation.control.select import CONTROLLERS, make_controller
 from usvstation.dynamics import Environment, ThrustCommand, Vessel, VesselState, otter
 from usvstation.dynamics.params import HullMismatch, VesselParams
-from usvstation.geometry import angle_diff
 from usvstation.guidance import Trajectory
 from usvstation.guidance.approach import (
     ApproachGates,
@@ -78,6 +77,7 @@ BACK_OFF_TO = 12.0  # m: a go-around closer to the ramp first backs away to here
 BACK_OFF_SPEED = 0.8  # m/s astern over ground while backing away
 ENTRY_MARGIN = 15.0  # m before the first gate: the approach line is joined from here
 STRAIGHT_MARGIN = 5.0  # m: the approach takes over this far before the plan's final straight
+AXIS_TOLERANCE = 1.0  # m off the ramp axis: a plan's point still on its final straight
 
 
 @dataclass(frozen=True)
@@ -454,12 +454,15 @@ class DynamicVehicle:
         return self._path_left(s) <= self._final_straight() + STRAIGHT_MARGIN
 
     def _final_straight(self) -> float:
-        """Length of the path's final straight: its last legs within 15 deg of the last."""
+        """Length of the path's final straight: its last legs on the ramp axis (every point
+        within AXIS_TOLERANCE of the line through the last waypoint along the last leg)."""
         tr = self._path
-        last = tr.segment_heading(tr.segment_count - 1)
+        a = tr.segment_heading(tr.segment_count - 1)
+        gx, gy = tr.points[-1]
         length = 0.0
         for i in range(tr.segment_count - 1, -1, -1):
-            if abs(angle_diff(tr.segment_heading(i), last)) > math.radians(15.0):
+            ax, ay, _, _ = tr.segment(i)
+            if abs(-(ax - gx) * math.sin(a) + (ay - gy) * math.cos(a)) > AXIS_TOLERANCE:
                 break
             length += tr.segment_length(i)
         return length
