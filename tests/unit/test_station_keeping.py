@@ -8,37 +8,17 @@ import math
 
 import pytest
 
-from usvstation.dynamics import Environment, HullMismatch
+from usvstation.bench.tracking import hold_through_change
+from usvstation.dynamics import Environment
 from usvstation.sim.dynamic import OVER_CAPACITY, DynamicVehicle
-
-TOP = 3.086  # m/s, the Otter
 
 
 def _hold_through(speed: float, turn_deg: float, over_s: float, *, through_slack: bool,
-                  seconds: float = 180.0, settle: float = 60.0, sensors: str = "rtk",
-                  hull: HullMismatch | None = None) -> tuple[float, float | None]:
-    """(largest true distance from the hold point, seconds from the change to the first
-    over-capacity notice or None): a current of `speed` towards +y turns by `turn_deg` over
-    `over_s` s, rotating at full strength or (`through_slack`) along the straight line
-    between the two vectors, as a tide that slackens and reverses."""
-    v = DynamicVehicle(40.0, 0.0, -math.pi / 2, env=Environment.with_current(speed, math.pi / 2),
-                       sensors=sensors, seed=3, hull=hull)
-    v.hold()
-    to = math.pi / 2 + math.radians(turn_deg)
-    worst, notice = 0.0, None
-    while v.truth.t < settle + seconds:
-        w = min(max((v.truth.t - settle) / over_s, 0.0), 1.0)
-        if through_slack:
-            cx, cy = w * speed * math.cos(to), (1 - w) * speed + w * speed * math.sin(to)
-            v.env = Environment.with_current(math.hypot(cx, cy), math.atan2(cy, cx))
-        else:
-            v.env = Environment.with_current(speed, math.pi / 2 + w * math.radians(turn_deg))
-        v.step(0.2)
-        if v.truth.t > settle:
-            worst = max(worst, math.hypot(v.truth.x - 40.0, v.truth.y))
-            if v.notice is not None and notice is None:
-                notice = v.truth.t - settle
-    return worst, notice
+                  seconds: float = 180.0) -> tuple[float, float | None]:
+    """(largest true distance from the hold point, seconds to the first over-capacity
+    notice or None): bench tracking's `hold_through_change`."""
+    row = hold_through_change(speed, turn_deg, over_s, through_slack, hold=seconds)
+    return row["radius_m"], row["over_capacity_after_s"]
 
 
 @pytest.mark.parametrize(("turn", "slack"), [(90.0, False), (180.0, True)])

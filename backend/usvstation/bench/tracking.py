@@ -463,6 +463,52 @@ def station_keeping(currents: tuple[float, ...] = (0.5, 1.0, 2.0, 2.4, 3.5),
     return rows
 
 
+STATION_CHANGES = (  # (current m/s, turn deg, over s, through slack water)
+    (1.0, 90.0, 20.0, False), (1.0, 180.0, 20.0, True), (1.0, 90.0, 10.0, False),
+    (1.0, 180.0, 10.0, True), (1.0, 180.0, 1.0, True), (2.4, 90.0, 30.0, False),
+    (2.4, 90.0, 10.0, False), (2.4, 180.0, 20.0, True),
+)
+
+
+def hold_through_change(speed: float, turn_deg: float, over_s: float, through_slack: bool,
+                        sensors: str = "rtk", settle: float = 60.0,
+                        hold: float = 180.0, seed: int = 3) -> dict[str, Any]:
+    """HOLD while the current (towards +y) turns by `turn_deg` over `over_s` seconds: at full
+    strength, or along the straight line between the two vectors (a tide that slackens and
+    reverses). Largest true distance from the hold point over `hold` s after the change
+    begins, and when the boat first reported that it cannot hold."""
+    from usvstation.sim.dynamic import DynamicVehicle
+
+    v = DynamicVehicle(40.0, 0.0, -math.pi / 2,
+                       env=Environment.with_current(speed, math.pi / 2), sensors=sensors,
+                       seed=seed)
+    v.hold()
+    to = math.pi / 2 + math.radians(turn_deg)
+    worst, notice = 0.0, None
+    while v.truth.t < settle + hold:
+        w = min(max((v.truth.t - settle) / over_s, 0.0), 1.0)
+        if through_slack:
+            cx = w * speed * math.cos(to)
+            cy = (1 - w) * speed + w * speed * math.sin(to)
+            v.env = Environment.with_current(math.hypot(cx, cy), math.atan2(cy, cx))
+        else:
+            v.env = Environment.with_current(speed, math.pi / 2 + w * math.radians(turn_deg))
+        v.step(0.2)
+        if v.truth.t > settle:
+            worst = max(worst, math.hypot(v.truth.x - 40.0, v.truth.y))
+            if v.notice is not None and notice is None:
+                notice = v.truth.t - settle
+    return {"current_mps": speed, "turn_deg": turn_deg, "over_s": over_s,
+            "through_slack": through_slack, "sensors": sensors,
+            "radius_m": round(worst, 3), "held": worst <= 2.0,
+            "over_capacity_after_s": round(notice, 1) if notice is not None else None}
+
+
+def station_keeping_changes() -> list[dict[str, Any]]:
+    """HOLD through currents that turn or reverse (issue 24), RTK-class sensors."""
+    return [hold_through_change(*case) for case in STATION_CHANGES]
+
+
 # ---------------------------------------------------------------- hairpins
 
 
@@ -758,6 +804,7 @@ def run_tracking_bench(progress: Callable[[str], None] | None = None,
     if progress:
         progress("station keeping")
     keeping = station_keeping()
+    keeping_changes = station_keeping_changes()
     if progress:
         progress("hairpins")
     pins = hairpins()
@@ -801,6 +848,7 @@ def run_tracking_bench(progress: Callable[[str], None] | None = None,
             "sensors": "exact GNSS position, COG/SOG, heading, yaw rate; drift from the observer",
         },
         "station_keeping": keeping,
+        "station_keeping_changes": keeping_changes,
         "hairpins": pins,
         "controllers": ctl,
         "elapsed_s": {"paper_reproduction": round(t1 - t0, 3), "disturbed": round(t2 - t1, 3),
