@@ -146,7 +146,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     bench = sub.add_parser("bench", help="run a benchmark and print its figures")
     bench.add_argument("name", choices=["planner", "tracking", "link", "server", "live",
-                                        "compare"],
+                                        "compare", "arrival"],
                        help="which benchmark")
     bench.add_argument("--json", action="store_true", help="print one JSON object (default)")
     bench.add_argument("--scenarios", type=Path, help="folder of scenarios (default: public suite)")
@@ -163,7 +163,11 @@ def build_parser() -> argparse.ArgumentParser:
                        help="print the tables for RESULTS.md from a saved --json result")
     bench.add_argument("--planners", help="compare: comma-separated planner names (default all)")
     bench.add_argument("--families", help="compare: comma-separated families (default all: "
-                       "recovery, transit, dense, colregs, traps)")
+                       "recovery, transit, dense, colregs, traps); arrival: perturbation "
+                       "families (default all)")
+    bench.add_argument("--workers", type=int, default=1,
+                       help="arrival: processes running the episodes (default 1; the figures "
+                       "do not depend on it)")
     bench.add_argument("--hidden", type=int, default=6,
                        help="compare: seeded hidden scenarios per family beside the public ones")
     bench.add_argument("--hidden-from", type=int, default=1000, metavar="SEED",
@@ -521,6 +525,8 @@ def _cmd_bench(args: argparse.Namespace) -> int:
                                 progress=lambda msg: print(msg, file=sys.stderr, flush=True))
         print(json.dumps(result, indent=2))
         return EXIT_OK
+    if args.name == "arrival":
+        return _cmd_bench_arrival(args)
     if args.name == "tracking":
         from usvstation.bench.tracking import run_tracking_bench
 
@@ -538,6 +544,23 @@ def _cmd_bench(args: argparse.Namespace) -> int:
             progress=lambda msg: print(msg, file=sys.stderr, flush=True),
         )
     except (FileNotFoundError, ValueError) as exc:
+        raise CliError(str(exc), EXIT_INVALID) from None
+    print(json.dumps(result, indent=2))
+    return EXIT_OK
+
+
+def _cmd_bench_arrival(args: argparse.Namespace) -> int:
+    from usvstation.bench.arrival import render_markdown, run_arrival_bench
+
+    if args.markdown:
+        return _print_markdown(render_markdown, args.markdown)
+    if args.workers < 1:
+        raise CliError(f"--workers: must be at least 1 (got {args.workers})", EXIT_INVALID)
+    families = tuple(f.strip() for f in args.families.split(",")) if args.families else None
+    try:
+        result = run_arrival_bench(families=families, quick=args.quick, workers=args.workers,
+                                   progress=lambda msg: print(msg, file=sys.stderr, flush=True))
+    except ValueError as exc:
         raise CliError(str(exc), EXIT_INVALID) from None
     print(json.dumps(result, indent=2))
     return EXIT_OK

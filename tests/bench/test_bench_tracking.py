@@ -85,11 +85,11 @@ def test_bench_tracking_prints_one_json_object_meeting_the_issue(capsys) -> None
     scenarios = {"case1", "case2", "case3", "case4"}
     assert {s for s, _ in by} == scenarios
     assert {m for _, m in by} == set(METHODS)
+    # (the arrival itself is judged by `bench arrival`, tests/bench/test_bench_arrival.py:
+    # these rows fly the plan-following methods without the ramp approach and its gates)
     for name in scenarios:
         comp, plain = by[(name, "avlos_comp")], by[(name, "los")]
         assert comp["current_source"] == "estimated"
-        assert abs(comp["arrival_offset_m"]) <= 0.3, name
-        assert abs(comp["arrival_heading_err_deg"]) <= 5.0, name
         assert comp["mean_dev_m"] < plain["mean_dev_m"], name  # (not always below avlos: case3)
         assert comp["estimate_error_mps"] < 0.1, name  # estimate against the truth
         assert by[(name, "avlos_comp_oracle")]["current_source"] == "oracle"
@@ -97,8 +97,7 @@ def test_bench_tracking_prints_one_json_object_meeting_the_issue(capsys) -> None
     assert result["disturbed_conditions"]["sea_state"] == 3
     assert math.isfinite(result["elapsed_s"]["disturbed"])
     assert len(result["disturbed_quartering_seas"]) == 4 * len(METHODS)
-    for row in result["disturbed_noisy_sensors"]["rows"]:  # RTK-class GNSS, 0.5 deg compass
-        assert abs(row["arrival_offset_m"]) <= 0.3 and abs(row["arrival_heading_err_deg"]) <= 5.0
+    assert len(result["disturbed_noisy_sensors"]["rows"]) == 4
     keeping = {r["current_mps"]: r for r in result["station_keeping"]}
     for current in (0.5, 1.0):
         assert keeping[current]["radius_m"] <= 2.0 and keeping[current]["hold_s"] >= 180.0

@@ -19,6 +19,7 @@ from c_boat_support import (
     CMD_START,
     DONE,
     FAILSAFE,
+    GO_AROUND,
     HOLD,
     IDLE,
     READY,
@@ -469,3 +470,24 @@ def test_an_unknown_sensor_profile_is_refused(exe):
                          capture_output=True, text=True, timeout=30)
     assert out.returncode == 2
     assert "--sensors dgps: unknown profile (exact, rtk, gnss, rtk-moving-base)" in out.stderr
+
+
+def test_a_missed_gate_goes_around_to_standby_and_resume_approaches_again(exe, d, key_path):
+    """Plain GNSS (no RTK-class fix): the 30 m gate is missed; the C boat reports GO_AROUND,
+    stands by at the first item 50 m back and RESUME re-flies the approach from there."""
+    items = line_north(3, step_m=60, leg_s=30)  # a 60 m final leg: every gate on it
+    with boat_and_station(exe, d, key_path, speedup=10,
+                          extra=("--sensors", "gnss", "--seed", "2")) as (_, c), heartbeats(c):
+        start = c.mark()
+        upload_and_start(c, 8, items)
+        c.wait_state(GO_AROUND, 60)
+        why = c.wait_for(lambda m: m.get_type() == "STATUSTEXT"
+                         and m.text.startswith("go-around:"), 10, start)
+        assert why.text == "go-around: gate 30 m: no RTK-class fix"
+        c.wait_for(lambda m: m.get_type() == "STATUSTEXT"
+                   and m.text == "go-around: at standby, RESUME to approach", 60, start)
+        ack = c.command(CMD_RESUME, 9, 4242)
+        assert ack.result == ACCEPTED
+        st = c.wait_state(RUNNING, 10)
+        assert st.current_seq == 1  # the approach again from the standby item, 60 m back
+        assert c.wait_state(GO_AROUND, 60).active_id == 8  # and again no RTK: around

@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 from types import SimpleNamespace
 
+import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
@@ -154,3 +155,48 @@ def test_tracking_loop_runs_guidance_at_its_own_period() -> None:
     assert calls == pytest.approx([0.2 * k for k in range(5)])
     with pytest.raises(ValueError, match="control_period <= guidance_period"):
         TrackingLoop(Vessel(OTTER, VesselState(0, 0, 0)), Recorder(), Autopilot(OTTER), 0.05, 0.2)
+
+
+# ------------------------------------------------------------------ robust to the hull (issue 24)
+
+
+def _heading_poles(thrust: float, drag: float) -> np.ndarray:
+    """Closed-loop poles of the heading loop, linearised: yaw m66 r' + drag d_r r = thrust N
+    behind the propellers' first-order lag tau, PID (kp e + ki int e - kd r) of the nominal
+    hull's pole placement. Characteristic polynomial:
+    m66 tau s^4 + (m66 + drag d_r tau) s^3 + (drag d_r + thrust kd) s^2 + thrust kp s
+    + thrust ki (the reference model and the feed-forward do not enter it)."""
+    from usvstation.control.autopilot import AutopilotGains
+    from usvstation.dynamics import otter
+
+    p = otter()
+    kp, ki, kd = AutopilotGains.for_vessel(p).heading
+    m66, d, tau = float(p.mass_matrix[2, 2]), p.linear_damping[2], p.thrusters.time_constant
+    return np.roots([m66 * tau, m66 + drag * d * tau, drag * d + thrust * kd, thrust * kp,
+                     thrust * ki])
+
+
+def _surge_poles(thrust: float, drag: float) -> np.ndarray:
+    """The speed loop likewise: m11 u' + drag d_u u = thrust X, PI, the same lag."""
+    from usvstation.control.autopilot import AutopilotGains
+    from usvstation.dynamics import otter
+
+    p = otter()
+    kp, ki = AutopilotGains.for_vessel(p).speed
+    m11, d, tau = float(p.mass_matrix[0, 0]), p.linear_damping[0], p.thrusters.time_constant
+    return np.roots([m11 * tau, m11 + drag * d * tau, drag * d + thrust * kp, thrust * ki])
+
+
+@pytest.mark.parametrize("drag", [0.75, 1.0, 1.25])
+@pytest.mark.parametrize("thrust", [0.85, 1.0])
+def test_the_autopilot_stays_stable_on_a_hull_that_is_not_its_model(drag, thrust):
+    """The stability argument of docs/tracking.md: the gains are placed on the nominal
+    Otter, the hull has +-25 % drag and 15 % less thrust; every closed-loop pole keeps a
+    negative real part (the slowest, the integrators', below -0.05 1/s)."""
+    assert max(_heading_poles(thrust, drag).real) < -0.05
+    assert max(_surge_poles(thrust, drag).real) < -0.04
+
+
+def test_the_heading_loop_keeps_a_wide_gain_margin():
+    for thrust in (0.1, 0.5, 2.0, 10.0):
+        assert max(_heading_poles(thrust, 1.0).real) < 0.0

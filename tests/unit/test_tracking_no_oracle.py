@@ -216,6 +216,38 @@ def test_pid_mrac_adapts_its_gains_by_the_mit_rule() -> None:
     assert abs(math.remainder(vessel.state.psi - 1.0, 2 * math.pi)) < math.radians(3.0)
 
 
+def _heading_trace(pilot: PIDMRAC, seconds: float = 30.0) -> list[float]:
+    vessel, env, out = cruising(), Environment(), []
+    while vessel.state.t < seconds:
+        vessel.step(pilot.update(Cmd(1.0, 2.0), vessel.state, 0.05), env, 0.05)
+        out.append(vessel.state.psi)
+    return out
+
+
+def test_table_iv_gains_act_changing_them_changes_the_response() -> None:
+    """Paper 002's gammas move the gains (issue 24: they used to divide themselves out):
+    with them the heading follows the 4.9 s reference model; with no adaptation, or ten
+    times Table IV's gammas, the same step is flown differently."""
+    table = _heading_trace(PIDMRAC(OTTER))
+    frozen = _heading_trace(PIDMRAC(OTTER, surge_gamma=(0.0, 0.0, 0.0),
+                                    heading_gamma=(0.0, 0.0, 0.0)))
+    faster = _heading_trace(PIDMRAC(OTTER, heading_gamma=(1000.0, 0.0, 14000.0)))
+    gap = max(abs(a - b) for a, b in zip(table, frozen, strict=True))
+    assert gap > math.radians(10.0)
+    assert max(abs(a - b) for a, b in zip(table, faster, strict=True)) > math.radians(2.0)
+    pilot = PIDMRAC(OTTER)
+    vessel, env = cruising(), Environment()
+    while vessel.state.t < 10.0:
+        vessel.step(pilot.update(Cmd(1.0, 2.0), vessel.state, 0.05), env, 0.05)
+    kp0, _ = pilot.initial["heading"]
+    assert abs(pilot.heading_gains[0] / kp0 - 1.0) > 0.2  # moved by more than 20 %
+
+
+@pytest.mark.parametrize("step", [30.0, 90.0])
+def test_pid_mrac_heading_steps_overshoot_at_most_10_percent(step) -> None:
+    assert step_response(step, "pid_mrac")["overshoot_pct"] <= 10.0
+
+
 def test_drnn_pi_is_seeded_and_its_weights_stay_bounded() -> None:
     a, b = DRNNPI(OTTER, seed=3), DRNNPI(OTTER, seed=3)
     assert (a.params_nn["W1"] == b.params_nn["W1"]).all()

@@ -39,6 +39,7 @@ from usvstation.dynamics.kinematic import KinematicBoat
 from usvstation.dynamics.params import VesselParams, otter, trimaran
 from usvstation.dynamics.vessel import ThrustCommand, Vessel, VesselState
 from usvstation.geometry import angle_diff
+from usvstation.guidance.approach import obstacle_check
 from usvstation.guidance.compensation import DisturbancePredictor, DriftModel, EstimatedDrift
 from usvstation.guidance.los import AVLOSGuidance, LOSGuidance
 from usvstation.guidance.observer import DriftObserver, Measurement
@@ -278,20 +279,9 @@ def start_state(plan: dict[str, Any], params: VesselParams, env: Environment) ->
 
 def _path_check(scenario: Any) -> Callable[[Trajectory], bool] | None:
     """Clearance of a bent path against the scenario's obstacles (hull half-length margin)."""
-    if scenario is None or not scenario.obstacles:
+    if scenario is None:
         return None
-    half = 0.5 * scenario.vessel.length
-
-    def check(tr: Trajectory) -> bool:
-        ts = np.linspace(tr.start_time, tr.end_time, 400)
-        pos = tr.position_at(ts)
-        for ob in scenario.obstacles:
-            ox, oy = ob.x + ob.vx * ts, ob.y + ob.vy * ts
-            if np.min(np.hypot(pos[:, 0] - ox, pos[:, 1] - oy)) <= ob.radius + half:
-                return False
-        return True
-
-    return check
+    return obstacle_check(scenario.obstacles, 0.5 * scenario.vessel.length)
 
 
 def track_plan(plan: dict[str, Any], method: str, params: VesselParams, env: Environment,
@@ -471,6 +461,52 @@ def station_keeping(currents: tuple[float, ...] = (0.5, 1.0, 2.0, 2.4, 3.5),
             "held": radius <= 2.0,
         })
     return rows
+
+
+STATION_CHANGES = (  # (current m/s, turn deg, over s, through slack water)
+    (1.0, 90.0, 20.0, False), (1.0, 180.0, 20.0, True), (1.0, 90.0, 10.0, False),
+    (1.0, 180.0, 10.0, True), (1.0, 180.0, 1.0, True), (2.4, 90.0, 30.0, False),
+    (2.4, 90.0, 10.0, False), (2.4, 180.0, 20.0, True),
+)
+
+
+def hold_through_change(speed: float, turn_deg: float, over_s: float, through_slack: bool,
+                        sensors: str = "rtk", settle: float = 60.0,
+                        hold: float = 180.0, seed: int = 3) -> dict[str, Any]:
+    """HOLD while the current (towards +y) turns by `turn_deg` over `over_s` seconds: at full
+    strength, or along the straight line between the two vectors (a tide that slackens and
+    reverses). Largest true distance from the hold point over `hold` s after the change
+    begins, and when the boat first reported that it cannot hold."""
+    from usvstation.sim.dynamic import DynamicVehicle
+
+    v = DynamicVehicle(40.0, 0.0, -math.pi / 2,
+                       env=Environment.with_current(speed, math.pi / 2), sensors=sensors,
+                       seed=seed)
+    v.hold()
+    to = math.pi / 2 + math.radians(turn_deg)
+    worst, notice = 0.0, None
+    while v.truth.t < settle + hold:
+        w = min(max((v.truth.t - settle) / over_s, 0.0), 1.0)
+        if through_slack:
+            cx = w * speed * math.cos(to)
+            cy = (1 - w) * speed + w * speed * math.sin(to)
+            v.env = Environment.with_current(math.hypot(cx, cy), math.atan2(cy, cx))
+        else:
+            v.env = Environment.with_current(speed, math.pi / 2 + w * math.radians(turn_deg))
+        v.step(0.2)
+        if v.truth.t > settle:
+            worst = max(worst, math.hypot(v.truth.x - 40.0, v.truth.y))
+            if v.notice is not None and notice is None:
+                notice = v.truth.t - settle
+    return {"current_mps": speed, "turn_deg": turn_deg, "over_s": over_s,
+            "through_slack": through_slack, "sensors": sensors,
+            "radius_m": round(worst, 3), "held": worst <= 2.0,
+            "over_capacity_after_s": round(notice, 1) if notice is not None else None}
+
+
+def station_keeping_changes() -> list[dict[str, Any]]:
+    """HOLD through currents that turn or reverse (issue 24), RTK-class sensors."""
+    return [hold_through_change(*case) for case in STATION_CHANGES]
 
 
 # ---------------------------------------------------------------- hairpins
@@ -769,6 +805,7 @@ def run_tracking_bench(progress: Callable[[str], None] | None = None,
     if progress:
         progress("station keeping")
     keeping = station_keeping()
+    keeping_changes = station_keeping_changes()
     if progress:
         progress("hairpins")
     pins = hairpins()
@@ -812,6 +849,7 @@ def run_tracking_bench(progress: Callable[[str], None] | None = None,
             "sensors": "exact GNSS position, COG/SOG, heading, yaw rate; drift from the observer",
         },
         "station_keeping": keeping,
+        "station_keeping_changes": keeping_changes,
         "hairpins": pins,
         "controllers": ctl,
         "elapsed_s": {"paper_reproduction": round(t1 - t0, 3), "disturbed": round(t2 - t1, 3),

@@ -2,21 +2,28 @@
 
 A boat told to HOLD must stay where it is in a current, so "at rest" means
 at rest over ground at the hold point, not a low speed over ground. The law
-asks for a ground velocity back to the hold point,
+asks for a ground velocity back to the hold point, a PI on the position error,
 
-    v_d = sat(k (p_hold - p), v_max),
+    v_d = sat(k e + k_i int(e), v_max),
 
 and turns it into a heading and speed through the water with the drift
-estimate. In a current (estimate above `weathervane_current`) the boat
-weathervanes: its bow stays within `max_offset` (60 deg) of straight into
-the current and its water speed along that heading (astern if need be) is
-the projection of v_d - c, so it never swings round through a full turn
-near the point. In slack water it goes for the point (`EstimatedDrift.solve`)
-and, close to it, keeps its heading and stops its propellers.
+estimate c: the water velocity it needs is w = v_d - c. In a current (estimate above
+`weathervane_current`) the boat weathervanes: bow into w; when w comes round behind it
+(more than 135 deg off the bow: a current that reversed, or the point behind it), stern
+into it with astern thrust, which a twin-screw boat can give at once, within the astern
+capacity; it turns its bow back into the current at slack water (or when astern power
+is not enough), so in a steady current it may hold bow or stern first. The heading
+follows the current as it turns, instead of being caught broadside. In slack water it
+turns towards the point before it goes (`EstimatedDrift.solve`, the speed scaled by the
+cosine of the heading still to turn) and, close to it, keeps its heading and stops its
+propellers.
 
-`over_capacity` is true when the estimated drift needs more than
-`capacity` x the top speed through the water: the boat then cannot hold
-and says so (the simulated boat reports it in a STATUSTEXT).
+`over_capacity` is true when the boat cannot hold: the estimated drift needs more than
+`capacity` x the top speed through the water, or the boat is more than `radius` (2 m)
+off its point (it clears within half of that), or a current above 60 % of its top speed
+comes from more than 60 deg off the way it must head (it is still turning to meet it and
+drifts meanwhile). The simulated boat reports it in a
+STATUSTEXT and the USV_MISSION_STATE flags.
 """
 
 from __future__ import annotations
@@ -39,12 +46,18 @@ class StationCommand:
     idle: bool  # propellers may stop: in slack water at the point
 
 
+STRONG_CURRENT = 0.6  # of the top speed: a current the boat cannot ride out broadside
+ASTERN_TURN = math.radians(135.0)  # a current this far round behind the bow: met astern
+BROADSIDE = math.radians(60.0)  # heading still to turn before the boat meets the current
+
+
 class StationKeeper:
     """Hold a point with the drift estimate: position loop -> compensation -> autopilot."""
 
-    def __init__(self, drift: EstimatedDrift, gain: float = 0.2, speed_max: float = 0.5,
+    def __init__(self, drift: EstimatedDrift, gain: float = 0.5, speed_max: float = 1.0,
                  idle_speed: float = 0.15, capacity: float = 0.9,
-                 weathervane_current: float = 0.15,
+                 weathervane_current: float = 0.15, integral_gain: float = 0.02,
+                 radius: float = 2.0, astern_share: float = 0.6,
                  max_offset: float = math.radians(60.0)) -> None:
         if not gain > 0.0 or not speed_max > 0.0:
             raise ValueError("station keeping: gain and speed_max must be > 0")
@@ -54,43 +67,86 @@ class StationKeeper:
         self.idle_speed = idle_speed
         self.capacity = capacity
         self.weathervane_current = weathervane_current
+        self.integral_gain = integral_gain
+        self.radius = radius
+        self.astern_share = astern_share  # of the top speed: what astern thrust can hold
         self.max_offset = max_offset
         self.point: tuple[float, float] | None = None
+        self.astern = False
+        self.off_point = False
+        # the current is strong and the boat must still turn far to meet it: it drifts
+        self.turning_in_strong_current = False
+        self._integral = (0.0, 0.0)
+        self._last_t: float | None = None
 
     def hold_at(self, x: float, y: float) -> None:
         if not (math.isfinite(x) and math.isfinite(y)):
             raise ValueError(f"station keeping: hold point must be finite (got {x}, {y})")
         self.point = (x, y)
+        self._integral, self._last_t, self.off_point = (0.0, 0.0), None, False
+        self.turning_in_strong_current = False
 
     @property
     def over_capacity(self) -> bool:
         top = self.drift.observer.params.top_speed
-        return self.drift.observer.speed > self.capacity * top
+        return self.drift.observer.speed > self.capacity * top or self.off_point or \
+            self.turning_in_strong_current
 
     def update(self, pose: Pose, t: float) -> StationCommand:
         check_pose(pose, t)
         if self.point is None:
             self.point = (pose.x, pose.y)
+        dt = 0.0 if self._last_t is None else min(max(t - self._last_t, 0.0), 1.0)
+        self._last_t = t
         dx, dy = self.point[0] - pose.x, self.point[1] - pose.y
         dist = math.hypot(dx, dy)
-        speed = min(self.gain * dist, self.speed_max)
-        vx, vy = (speed * dx / dist, speed * dy / dist) if dist > 1e-9 else (0.0, 0.0)
-        cx, cy = self.drift.observer.estimate
-        if math.hypot(cx, cy) < self.weathervane_current:
+        if dist > self.radius:
+            self.off_point = True
+        elif dist < 0.5 * self.radius:
+            self.off_point = False
+        ix, iy = self._integral
+        if dist < self.radius:  # integrate near the point only (no wind-up out of reach)
+            ix, iy = ix + dx * dt, iy + dy * dt
+            cap = self.speed_max / max(self.integral_gain, 1e-9)
+            norm = math.hypot(ix, iy)
+            if norm > cap:
+                ix, iy = ix * cap / norm, iy * cap / norm
+        self._integral = (ix, iy)
+        vx = self.gain * dx + self.integral_gain * ix
+        vy = self.gain * dy + self.integral_gain * iy
+        speed = math.hypot(vx, vy)
+        if speed > self.speed_max:
+            vx, vy = vx * self.speed_max / speed, vy * self.speed_max / speed
+        cx, cy = self.drift.observer.fast  # react to a changing current within a second
+        if math.hypot(*self.drift.observer.estimate) < self.weathervane_current:
             sol = self.drift.solve(vx, vy, pose.psi)
             if sol.water_speed < self.idle_speed and math.hypot(vx, vy) < self.idle_speed:
                 return StationCommand(pose.psi, 0.0, None, True)
-            return StationCommand(sol.heading, sol.surge, sol.water_speed, False)
-        # Weathervane: the bow stays within `max_offset` of straight into the
-        # current, and the water speed along it (astern if need be) makes the
-        # best of the wanted ground velocity.
+            # turn first, then go: running on while the bow swings round orbits the point
+            ahead = max(math.cos(angle_diff(sol.heading, pose.psi)), 0.0)
+            return StationCommand(sol.heading, sol.surge * ahead, sol.water_speed * ahead, False)
+        # Weathervane: bow (or stern) into the water velocity it needs.
+        top = self.drift.observer.params.top_speed
+        astern_cap = self.astern_share * top
+        astern_ok = math.hypot(cx, cy) <= 0.9 * astern_cap
         wx, wy = vx - cx, vy - cy
-        into = math.atan2(-cy, -cx)
-        want = math.atan2(wy, wx)
-        off = angle_diff(want, into)
-        psi = wrap_angle(into + min(max(off, -self.max_offset), self.max_offset))
+        bow = math.atan2(wy, wx)
+        stern = wrap_angle(bow + math.pi)
+        turn_bow = abs(angle_diff(bow, pose.psi))
+        if not astern_ok or math.hypot(cx, cy) < self.weathervane_current:
+            self.astern = False  # beyond astern power, or slack: the bow again
+        elif not self.astern:  # what it must meet came round behind it: stern first
+            self.astern = turn_bow > ASTERN_TURN
+        psi = stern if self.astern else bow
+        self.turning_in_strong_current = (
+            math.hypot(cx, cy) > STRONG_CURRENT * top
+            and abs(angle_diff(psi, pose.psi)) > BROADSIDE)
+        # what the propellers can give that way: the pursuit of the point shrinks first
+        cap = astern_cap if self.astern else 0.95 * top
+        shrink = _within(vx, vy, cx, cy, cap)
+        wx, wy = shrink * vx - cx, shrink * vy - cy
         c, s = math.cos(psi), math.sin(psi)
-        water = wx * c + wy * s
+        water = wx * c + wy * s  # negative: astern
         surge = water + cx * c + cy * s
         return StationCommand(psi, surge, water, False)
 
@@ -99,3 +155,19 @@ class StationKeeper:
         c = self.update(pose, t)
         point = self.point or (pose.x, pose.y)
         return GuidanceCommand(c.heading, c.speed, point, t, 0, False, c.water_speed)
+
+
+def _within(vx: float, vy: float, cx: float, cy: float, cap: float) -> float:
+    """The largest s in [0, 1] with |s v - c| <= cap (0 when even -c exceeds it)."""
+    if math.hypot(vx - cx, vy - cy) <= cap:
+        return 1.0
+    if math.hypot(cx, cy) >= cap:
+        return 0.0
+    lo, hi = 0.0, 1.0
+    for _ in range(20):
+        mid = 0.5 * (lo + hi)
+        if math.hypot(mid * vx - cx, mid * vy - cy) <= cap:
+            lo = mid
+        else:
+            hi = mid
+    return lo

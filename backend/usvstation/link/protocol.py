@@ -81,7 +81,8 @@ class MissionState:
 
     uptime_ms: int
     boot_id: int
-    state: str  # USV_BOAT_STATE name: IDLE, READY, RUNNING, HOLD, DONE, ABORTED, FAILSAFE
+    state: str  # USV_BOAT_STATE name: IDLE, READY, RUNNING, HOLD, DONE, ABORTED, FAILSAFE,
+    # GO_AROUND
     active_id: int
     active_crc32: int
     active_count: int
@@ -94,13 +95,16 @@ class MissionState:
     swap_at_ms: int
     station_session: int
     rejected: int
+    over_capacity: bool = False  # flags: USV_STATE_FLAG_OVER_CAPACITY
 
     @classmethod
     def from_msg(cls, m: Any) -> MissionState:
+        flags = getattr(m, "flags", 0) or 0  # an extension field: 0 from an older boat
         return cls(m.uptime_ms, m.boot_id, wire.BOAT_STATES.get(m.state, str(m.state)),
                    m.active_id, m.active_crc32, m.active_count, m.current_seq, m.staging,
                    m.staged_id, m.staged_crc32, m.staged_received, m.staged_count,
-                   m.swap_at_ms, m.station_session, m.rejected)
+                   m.swap_at_ms, m.station_session, m.rejected,
+                   bool(flags & mav.USV_STATE_FLAG_OVER_CAPACITY))
 
 
 @dataclass(frozen=True)

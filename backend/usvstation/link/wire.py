@@ -42,7 +42,8 @@ COMMANDS = {"start": mav.MAV_CMD_USV_START, "hold": mav.MAV_CMD_USV_HOLD,
             "resume": mav.MAV_CMD_USV_RESUME, "abort": mav.MAV_CMD_USV_ABORT}
 COMMAND_NAMES = {v: k for k, v in COMMANDS.items()}
 BOAT_STATES = {v: e.name.removeprefix("USV_BOAT_STATE_")
-               for v, e in mav.enums["USV_BOAT_STATE"].items() if v < 7}
+               for v, e in mav.enums["USV_BOAT_STATE"].items()
+               if not e.name.endswith("_ENUM_END")}
 MISSION_RESULTS = {v: e.name.removeprefix("USV_MISSION_")
                    for v, e in mav.enums["USV_MISSION_RESULT"].items() if v < 10}
 COMMAND_REASONS = {v: e.name.removeprefix("USV_COMMAND_REASON_")

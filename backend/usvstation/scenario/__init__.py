@@ -7,6 +7,7 @@ Validation names the field and the reason; unknown fields are errors.
 
 from __future__ import annotations
 
+import itertools
 import json
 import math
 from importlib import resources
@@ -85,6 +86,20 @@ class Vessel(BaseModel):
         description="the hull stays clear of moving obstacles when this many seconds early "
         "or late anywhere on the plan",
     )
+    # The ramp's tolerances and the approach gates (issue 24, docs/tracking.md).
+    arrival_offset_m: float = Field(0.3, gt=0.0, le=10.0, description="an arrival: the "
+                                    "hull within this of the ramp axis at the ramp end, m")
+    arrival_heading_deg: float = Field(5.0, gt=0.0, le=45.0, description="an arrival: the "
+                                       "hull within this of the arrival heading")
+    contact_offset_m: float = Field(0.5, gt=0.0, le=10.0, description="a contact farther "
+                                    "off the axis than this is a bad arrival, m")
+    contact_heading_deg: float = Field(8.0, gt=0.0, le=60.0, description="a contact more "
+                                       "askew than this is a bad arrival")
+    gates_m: list[float] = Field([30.0, 15.0, 5.0], min_length=1, max_length=8,
+                                 description="approach gates: distances from the ramp end, "
+                                 "descending, m")
+    standby_m: float = Field(50.0, gt=0.0, le=10000.0, description="the go-around's standby "
+                             "point: this far out from the ramp end on the axis, m")
 
     @model_validator(mode="after")
     def _speed_range(self) -> Vessel:
@@ -93,6 +108,24 @@ class Vessel(BaseModel):
                 f"vessel.speed_min: must be below speed_max "
                 f"(got speed_min={self.speed_min}, speed_max={self.speed_max})"
             )
+        return self
+
+    @model_validator(mode="after")
+    def _ramp_limits(self) -> Vessel:
+        if self.arrival_offset_m >= self.contact_offset_m:
+            raise ValueError("vessel.arrival_offset_m: must be below contact_offset_m "
+                             f"(got {self.arrival_offset_m} and {self.contact_offset_m})")
+        if self.arrival_heading_deg >= self.contact_heading_deg:
+            raise ValueError("vessel.arrival_heading_deg: must be below contact_heading_deg "
+                             f"(got {self.arrival_heading_deg} and "
+                             f"{self.contact_heading_deg})")
+        g = self.gates_m
+        if any(not (0.0 < x <= 1000.0) for x in g) or any(b >= a for a, b in itertools.pairwise(g)):
+            raise ValueError(f"vessel.gates_m: must be positive, at most 1000 and strictly "
+                             f"descending (got {g})")
+        if self.standby_m <= g[0]:
+            raise ValueError(f"vessel.standby_m: must lie beyond the first gate "
+                             f"(got {self.standby_m} <= {g[0]})")
         return self
 
 

@@ -1,4 +1,6 @@
-"""Link alerts: the boat link lost (warning) and back (advisory), from the link's own events.
+"""Link alerts, from the link's own events: the boat link lost (warning) and back (advisory),
+a go-around (warning: the boat missed an approach gate and stands by for a new approach) and
+the boat's over-capacity notice (warning: the current exceeds what it can hold).
 
 They are raised through the plan monitor's `raise_alert`, so they are stored with their run
 (store/alerts.py), exported and pushed to the live hub like every other alert.
@@ -9,16 +11,22 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from usvstation.link.protocol import LinkDown, LinkEvent, LinkUp
+from usvstation.link.protocol import BoatReport, LinkDown, LinkEvent, LinkUp, StatusTextReceived
 from usvstation.world.monitor import AlertEvent
+
+GO_AROUND_TEXT = "go-around:"  # the boat's STATUSTEXT giving the reason
 
 
 class LinkAlerts:
-    """A BoatLink listener: one warning when the link goes down, one advisory when it is back."""
+    """A BoatLink listener: one warning when the link goes down, one advisory when it is back;
+    one warning per go-around and per over-capacity notice the boat reports."""
 
     def __init__(self, raise_alert: Callable[[AlertEvent], Any]) -> None:
         self.raise_alert = raise_alert
         self.link_lost = False
+        self.state: str | None = None
+        self.over_capacity = False
+        self.go_around_reason = ""
 
     def on_link_event(self, ev: LinkEvent) -> None:
         if isinstance(ev, LinkDown):
@@ -29,3 +37,21 @@ class LinkAlerts:
         elif isinstance(ev, LinkUp) and self.link_lost:
             self.link_lost = False
             self.raise_alert(AlertEvent("advisory", "link_restored", "link to the boat restored"))
+        elif isinstance(ev, StatusTextReceived) and ev.text.startswith(GO_AROUND_TEXT) and \
+                "standby" not in ev.text:
+            self.go_around_reason = ev.text.removeprefix(GO_AROUND_TEXT).strip()
+        elif isinstance(ev, BoatReport):
+            self._on_report(ev)
+
+    def _on_report(self, ev: BoatReport) -> None:
+        state, previous = ev.report.state, self.state
+        self.state = state
+        if state == "GO_AROUND" and previous not in (None, "GO_AROUND", "HOLD", "FAILSAFE"):
+            why = f" ({self.go_around_reason})" if self.go_around_reason else ""
+            self.raise_alert(AlertEvent(
+                "warning", "go_around", f"the boat went around{why}: it flies to its standby "
+                "point; RESUME there for a new approach"))
+        if ev.report.over_capacity and not self.over_capacity:
+            self.raise_alert(AlertEvent("warning", "over_capacity",
+                                        "the current exceeds what the boat can hold: drifting"))
+        self.over_capacity = ev.report.over_capacity

@@ -51,7 +51,8 @@ from usvstation.sim.frame import RampMotion
 from usvstation.sim.sensors import Battery, GpsNoise
 from usvstation.sim.vehicle import Vehicle, Waypoint
 
-S_IDLE, S_READY, S_RUNNING, S_HOLD, S_DONE, S_ABORTED, S_FAILSAFE = range(7)
+S_IDLE, S_READY, S_RUNNING, S_HOLD, S_DONE, S_ABORTED, S_FAILSAFE, S_GO_AROUND = range(8)
+UNDER_WAY = (S_RUNNING, S_HOLD, S_FAILSAFE, S_GO_AROUND)  # a mission is being flown
 ST_NONE, ST_RECEIVING, ST_VERIFIED = range(3)
 R = mav  # result and reason constants live in the generated module
 STAGE_BEGIN, STAGE_ITEM, STAGE_END, STAGE_READ = 1, 2, 3, 4
@@ -166,6 +167,7 @@ class BoatProtocol:
         self.telemetry_dropped = 0
         self.log: list[str] = []  # status texts, for the runner to print
         self.last_notice: str | None = None  # the vehicle's standing notice, sent once
+        self._standby_said = False
         self._text_budget_at = -math.inf
         self._swap_mission: ActiveMission | None = None
         self._urgent = bytearray()
@@ -235,7 +237,8 @@ class BoatProtocol:
     def _heartbeat(self, now: float) -> None:
         e = self.codec.mav
         status = mav.MAV_STATE_CRITICAL if self.state == S_FAILSAFE else \
-            mav.MAV_STATE_ACTIVE if self.state in (S_RUNNING, S_HOLD) else mav.MAV_STATE_STANDBY
+            mav.MAV_STATE_ACTIVE if self.state in (S_RUNNING, S_HOLD, S_GO_AROUND) \
+            else mav.MAV_STATE_STANDBY
         base = mav.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED | (
             mav.MAV_MODE_FLAG_AUTO_ENABLED if self.state == S_RUNNING else 0)
         self._send(e.heartbeat_encode(mav.MAV_TYPE_SURFACE_BOAT, mav.MAV_AUTOPILOT_GENERIC,
@@ -253,7 +256,13 @@ class BoatProtocol:
             s.state if s else ST_NONE, s.mission_id if s else 0, s.crc32 if s else 0,
             s.contiguous if s else 0, s.count if s else 0,
             s.swap_at_ms if s and s.state == ST_VERIFIED else 0,
-            self.session, self.rejected), now)
+            self.session, self.rejected, self.flags), now)
+
+    @property
+    def flags(self) -> int:
+        """USV_MISSION_STATE.flags: USV_STATE_FLAG_OVER_CAPACITY while the vehicle says it
+        cannot hold its point."""
+        return mav.USV_STATE_FLAG_OVER_CAPACITY if self.last_notice else 0
 
     # ---- messages
     def _handle(self, msg: Any, now: float) -> None:
@@ -343,17 +352,25 @@ class BoatProtocol:
             self.state = S_RUNNING
             self.activations.append((self.boat_time, a.mission_id))
         elif name == "hold":  # always acts: whatever moves stops and keeps station
-            if st in (S_RUNNING, S_FAILSAFE, S_HOLD):
+            if st in UNDER_WAY:
                 self.vehicle.hold()
                 self._clear_guidance()
                 self.state = S_HOLD
         elif name == "resume":
             if st == S_RUNNING:
                 return R.MAV_RESULT_ACCEPTED, R.USV_COMMAND_REASON_NONE
-            if st not in (S_HOLD, S_FAILSAFE):
+            if st == S_GO_AROUND:  # a new approach, from the standby point only
+                if not self.vehicle.reapproach():
+                    self._text(mav.MAV_SEVERITY_WARNING,
+                               "RESUME refused: go-around not at standby yet", now)
+                    return denied, R.USV_COMMAND_REASON_WRONG_STATE
+                self.state = S_RUNNING
+                self._text(mav.MAV_SEVERITY_INFO, "new approach from standby", now)
+            elif st not in (S_HOLD, S_FAILSAFE):
                 return denied, R.USV_COMMAND_REASON_WRONG_STATE
-            self.vehicle.resume()
-            self.state = S_RUNNING
+            else:
+                self.vehicle.resume()
+                self.state = S_GO_AROUND if self._going_around() else S_RUNNING
         elif name == "abort":  # always acts: thrusters stop, missions and staging dropped
             self.vehicle.abort()
             self._clear_guidance()
@@ -385,7 +402,7 @@ class BoatProtocol:
             self._text(mav.MAV_SEVERITY_WARNING, f"mission {mid}: count {b.count} outside "
                        f"{MIN_ITEMS}..{wire.MAX_MISSION_ITEMS}", now)
             return self._mission_ack(mid, 0, R.USV_MISSION_BAD_COUNT, STAGE_BEGIN, now)
-        running = self.state in (S_RUNNING, S_HOLD, S_FAILSAFE)
+        running = self.state in UNDER_WAY
         if (b.swap_at_ms == 0 and running) or (b.swap_at_ms and self.state != S_RUNNING):
             return self._mission_ack(mid, 0, R.USV_MISSION_DENIED, STAGE_BEGIN, now)
         if st is not None and (st.mission_id, st.crc32, st.count, st.swap_at_ms) == \
@@ -463,7 +480,7 @@ class BoatProtocol:
             self._mission_ack(mid, st.count, R.USV_MISSION_ACCEPTED, STAGE_END, now)
             self._report(now)
             return None
-        if self.state in (S_RUNNING, S_HOLD, S_FAILSAFE):
+        if self.state in UNDER_WAY:
             self.staging = None
             return self._mission_ack(mid, 0, R.USV_MISSION_DENIED, STAGE_END, now)
         self.vehicle.set_mission(self._waypoints(items))  # built whole, then swapped in
@@ -532,7 +549,7 @@ class BoatProtocol:
         self.ramp_stale = True
         self.ramp = self.ramp.frozen(self.boat_time)
         self._set_frame(reanchor=True)
-        if self.state == S_RUNNING:
+        if self.state in (S_RUNNING, S_GO_AROUND):
             self.vehicle.hold()
             self._clear_guidance()
             self.state = S_HOLD
@@ -569,6 +586,7 @@ class BoatProtocol:
             self.last_notice = notice
             if notice:
                 self._text(mav.MAV_SEVERITY_WARNING, notice[:50], now)
+            self._report(now)  # the over-capacity flag changed
         target = self.boat_time + dt_link * self.cfg.sim_speed
         while True:  # each timer at its own boat-time instant, in order
             st = self.staging
@@ -599,6 +617,7 @@ class BoatProtocol:
             self.state = S_DONE
             self._text(mav.MAV_SEVERITY_INFO, f"mission {self.active.mission_id} complete", now)
             self._report(now)
+        self._follow_go_around(now)
         if self.ramp_rx is not None and not self.ramp_stale and \
                 now - self.ramp_rx > self.cfg.ramp_timeout_s:
             self._ramp_lost(now)
@@ -610,6 +629,24 @@ class BoatProtocol:
             self.expired_id, self.staging = st.mission_id, None
             self._text(mav.MAV_SEVERITY_WARNING, f"staging of {st.mission_id} expired", now)
             self._report(now)
+
+    def _going_around(self) -> bool:
+        return getattr(self.vehicle, "go_around", None) is not None
+
+    def _follow_go_around(self, now: float) -> None:
+        """RUNNING -> GO_AROUND when the vehicle misses a gate; say when it reached the
+        standby point (RESUME then starts a new approach)."""
+        if self.state == S_RUNNING and self._going_around():
+            self.state = S_GO_AROUND
+            self._clear_guidance()
+            self._standby_said = False
+            self._text(mav.MAV_SEVERITY_WARNING, f"go-around: {self.vehicle.go_around}", now)
+            self._report(now)
+        if self.state == S_GO_AROUND and not self._standby_said and \
+                getattr(self.vehicle, "phase", "") == "standby":
+            self._standby_said = True
+            self._text(mav.MAV_SEVERITY_INFO, "go-around: at standby, RESUME to approach",
+                       now)
 
     def _do_swap(self, now: float) -> None:
         st, new = self.staging, self._swap_mission
@@ -629,7 +666,7 @@ class BoatProtocol:
 
     def _failsafe(self, now: float) -> None:
         self.linked = False
-        if self.state in (S_RUNNING, S_HOLD):
+        if self.state in (S_RUNNING, S_HOLD, S_GO_AROUND):
             self.vehicle.hold()
             self._clear_guidance()
             self.state = S_FAILSAFE

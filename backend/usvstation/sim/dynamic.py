@@ -41,15 +41,23 @@ the ramp frame's.
 
 from __future__ import annotations
 
+import itertools
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 
 from usvstation.control.select import CONTROLLERS, make_controller
 from usvstation.dynamics import Environment, ThrustCommand, Vessel, VesselState, otter
 from usvstation.dynamics.params import HullMismatch, VesselParams
 from usvstation.guidance import Trajectory
-from usvstation.guidance.compensation import EstimatedDrift
+from usvstation.guidance.approach import (
+    ApproachGates,
+    ArrivalLimits,
+    RampApproach,
+    escape_routes,
+    standby_point,
+)
+from usvstation.guidance.compensation import CompensatedAVLOS, EstimatedDrift
 from usvstation.guidance.observer import DriftObserver, Measurement
 from usvstation.guidance.select import GUIDANCE_METHODS, make_guidance
 from usvstation.guidance.station import StationKeeper
@@ -63,6 +71,13 @@ LOOKAHEAD = 8.0  # m, four Otter lengths (docs/tracking.md)
 OVERRUN = 15.0  # m of path past the ramp end, so the boat drives on up the ramp
 HOLD_RADIUS = 3.0  # m, what a holding boat keeps within (tests, integration)
 OVER_CAPACITY = "current exceeds what the boat can hold: drifting"
+APPROACH_SPEED_MAX = 1.8  # m/s along the axis (relative to the ramp) on the final approach
+ESCAPE_SPEED = 1.5  # m/s over ground on a go-around's escape route
+BACK_OFF_TO = 12.0  # m: a go-around closer to the ramp first backs away to here
+BACK_OFF_SPEED = 0.8  # m/s astern over ground while backing away
+ENTRY_MARGIN = 15.0  # m before the first gate: the approach line is joined from here
+STRAIGHT_MARGIN = 5.0  # m: the approach takes over this far before the plan's final straight
+AXIS_TOLERANCE = 1.0  # m off the ramp axis: a plan's point still on its final straight
 
 
 @dataclass(frozen=True)
@@ -80,11 +95,17 @@ class DynamicVehicle:
                  accel: float = 0.5, guidance: str = "avlos_comp",
                  controller: str = "pid", frame: RampMotion | None = None,
                  sensors: str | SensorProfile = "exact", hull: HullMismatch | None = None,
-                 seed: int = 0) -> None:
+                 seed: int = 0, arrival: ArrivalLimits | None = None,
+                 path_check: Callable[[Trajectory], bool] | None = None,
+                 initial: VesselState | None = None) -> None:
         """At (x, y) heading `heading` making `speed` along it; with `frame` these are in
         the moving ramp frame (the start relative to the ship) and the vehicle tracks in it
         from the start. `params` is the hull the boat's controllers know; `hull` how the
-        real one differs; `sensors` (a profile or its name) and `seed` what it measures."""
+        real one differs; `sensors` (a profile or its name) and `seed` what it measures.
+        `arrival` (a recovery's ramp limits) turns on the final approach, its gates and
+        the go-around; `path_check` must accept every path the boat makes up itself (the
+        approach line, the escape route) before it is flown (None: no obstacles known).
+        `initial` replaces the start state (a bench's steady motion; fixed frame only)."""
         if guidance not in GUIDANCE_METHODS:
             raise ValueError(f"guidance: unknown method {guidance!r}; "
                              f"available: {', '.join(GUIDANCE_METHODS)}")
@@ -109,8 +130,8 @@ class DynamicVehicle:
             gx, gy = speed * math.cos(psi) + px, speed * math.sin(psi) + py
             c, s = math.cos(psi), math.sin(psi)
             start = VesselState(wx, wy, psi, gx * c + gy * s, -gx * s + gy * c)
-        self.vessel = Vessel(self.true_params, start)
-        if speed > 0.0:
+        self.vessel = Vessel(self.true_params, initial or start)
+        if speed > 0.0 and initial is None:
             trim = 0.5 * self.true_params.surge_drag(speed)
             self.vessel.set_initial_thrust(ThrustCommand(trim, trim))
         self.pilot = make_controller(controller, self.params)
@@ -118,9 +139,22 @@ class DynamicVehicle:
         self.drift = EstimatedDrift(self.observer)
         self.keeper = StationKeeper(self.drift)
         self.keeper.hold_at(x, y)  # ramp frame
+        self.arrival = arrival
+        self.path_check = path_check
         self._wps: list[Waypoint] = []
         self._guide = None
-        self._phase = "idle"  # idle | track | hold | guided | done | aborted
+        # idle | track | hold | guided | done | aborted | go_around | standby
+        self._phase = "idle"
+        self._approach: RampApproach | None = None
+        self.gates = ApproachGates(arrival, self.params.top_speed) if arrival else None
+        self.go_around: str | None = None  # why, while a go-around runs (GO_AROUND)
+        self.go_arounds = 0
+        self.bend_rejected = False  # the approach line failed path_check: the plan's kept
+        self._escape = None  # the escape route's guidance
+        self._standby: tuple[float, float] | None = None
+        self._held_from: str | None = None  # the go-around phase a HOLD interrupted
+        self._back_heading = heading  # the heading a go-around backs away on
+        self._path: Trajectory | None = None  # the timed path being flown
         self._tau = 0.0  # mission time
         self._pending = 0.0  # boat time not yet simulated (less than one control period)
         self._next_guidance = 0.0
@@ -174,9 +208,19 @@ class DynamicVehicle:
     @property
     def notice(self) -> str | None:
         """A warning for the operator while station keeping cannot hold, else None."""
-        if self._phase in ("hold", "idle") and self.keeper.over_capacity:
+        if self._phase in ("hold", "idle", "standby") and self.keeper.over_capacity:
             return OVER_CAPACITY
         return None
+
+    @property
+    def approach(self) -> RampApproach | None:
+        """The final approach's guidance while the boat flies it."""
+        return self._approach
+
+    @property
+    def standby(self) -> tuple[float, float] | None:
+        """The go-around's standby point (ramp frame) once chosen."""
+        return self._standby
 
     def set_mission(self, waypoints: Sequence[Waypoint]) -> None:
         self._wps = checked_mission(waypoints)
@@ -186,27 +230,58 @@ class DynamicVehicle:
     def start(self) -> None:
         if len(self._wps) < 2:
             return
-        traj = Trajectory.from_xyt([(w.x, w.y, w.t) for w in self._wps])
+        self._fly([(w.x, w.y, w.t) for w in self._wps])
+
+    def _fly(self, rows: list[tuple[float, float, float]]) -> None:
+        """Track the timed path `rows` (the mission, or a new approach) from its start."""
+        traj = Trajectory.from_xyt(rows)
         self._guide = make_guidance(
             self.guidance_method, traj, self.params, self.drift, lookahead=LOOKAHEAD,
-            accel=self.accel, overrun=OVERRUN,
+            accel=self.accel, overrun=OVERRUN, path_check=self.path_check,
         )
+        self._path = traj
         self._tau, self._complete, self._command = 0.0, False, None
+        self._approach, self._escape, self.go_around = None, None, None
+        if self.gates is not None:
+            self.gates.reset()
         self._next_guidance = 0.0
         self.pilot.reset()
         self._phase = "track"
 
     def hold(self) -> None:
+        if self._phase in ("go_around", "standby"):
+            self._held_from = self._phase
+            self._phase = "hold"
+            self.keeper.hold_at(self._meas.x, self._meas.y)
+            self.pilot.reset()
+            return
         if self._phase in ("track", "guided", "idle", "done"):
             self._keep_station()
 
     def resume(self) -> None:
+        if self._phase == "hold" and self._held_from is not None:
+            self._phase, self._held_from = self._held_from, None  # back to the go-around
+            if self._phase == "standby" and self._standby is not None:
+                self.keeper.hold_at(*self._standby)
+            self._command = None
+            return
         if self._guide is not None and not self._complete and self._phase in ("hold", "guided"):
             self._phase, self._command = "track", None
             self._next_guidance = self._tau
 
+    def reapproach(self) -> bool:
+        """A new approach from the standby point after a go-around (False: not there)."""
+        if self._phase != "standby" or self._standby is None or not self._wps:
+            return False
+        sx, sy = self._standby
+        gx, gy = self._wps[-1].x, self._wps[-1].y
+        speed = max(self._approach_speed(), 0.5)
+        self._fly([(sx, sy, 0.0), (gx, gy, math.hypot(gx - sx, gy - sy) / speed)])
+        return True
+
     def abort(self) -> None:
         self._wps, self._guide, self._phase = [], None, "aborted"
+        self._approach, self._escape, self.go_around, self._held_from = None, None, None, None
 
     def set_guidance(self, heading: float, speed: float) -> None:
         self._guided = _Command(heading, max(0.0, min(speed, self.params.top_speed)))
@@ -302,7 +377,7 @@ class DynamicVehicle:
         else:
             self._thrust = self.pilot.update(command, s, CONTROL_PERIOD)
         self.vessel.step(self._thrust, self.env, CONTROL_PERIOD)
-        if self._phase == "track":
+        if self._phase in ("track", "go_around"):
             self._tau += CONTROL_PERIOD
 
     def _ramp_pose(self, t: float) -> tuple[float, float, float]:
@@ -313,17 +388,171 @@ class DynamicVehicle:
     def _steer(self, s: Measurement) -> _Command | None:
         if self._phase == "track" and self._guide is not None:
             if self._command is None or self._tau >= self._next_guidance - 1e-9:
-                cmd = self._guide.update(s, self._tau)
-                self._segment = cmd.segment
-                self._command = _Command(cmd.heading, cmd.speed, cmd.water_speed)
+                self._command = self._track(s)
                 self._next_guidance = self._tau + GUIDANCE_PERIOD
-            return self._command
+            if self._phase == "track":
+                return self._command
+        if self._phase == "go_around":
+            return self._escape_command(s)
         if self._phase == "guided":
             return self._guided
-        if self._phase in ("hold", "idle"):
+        if self._phase in ("hold", "idle", "standby"):
             c = self.keeper.update(s, s.t)
             return None if c.idle else _Command(c.heading, c.speed, c.water_speed)
         return None  # done (on the ramp) or aborted: propellers stopped
+
+    # --- the final approach, its gates and the go-around (guidance/approach.py) -----------
+    def _track(self, s: Measurement) -> _Command | None:
+        if self.arrival is not None and self._approach is None and self._entering(s):
+            self._begin_approach(s)
+            if self._phase == "go_around":
+                return None
+        if self._approach is None:
+            cmd = self._guide.update(s, self._tau)
+            self._segment = cmd.segment
+            return _Command(cmd.heading, cmd.speed, cmd.water_speed)
+        cmd = self._approach.update(s, self._tau)
+        gate = self.gates.check(self._approach.state, self._nav_ok())
+        if gate is not None and not gate.passed:
+            self._start_go_around(gate.reason)
+            return None
+        return _Command(cmd.heading, cmd.speed, cmd.water_speed)
+
+    def _approach_speed(self) -> float:
+        a, b = self._wps[-2], self._wps[-1]
+        plan = math.hypot(b.x - a.x, b.y - a.y) / max(b.t - a.t, 1e-6)
+        return min(plan, APPROACH_SPEED_MAX)
+
+    def _arrival_heading(self) -> float:
+        a, b = self._wps[-2], self._wps[-1]
+        return math.atan2(b.y - a.y, b.x - a.x)
+
+    def _new_approach(self, line_override: float | None = None) -> RampApproach:
+        goal = (self._wps[-1].x, self._wps[-1].y)
+        return RampApproach(goal, self._arrival_heading(), self.drift, self.arrival,
+                            self._approach_speed(), 0.95 * self.params.top_speed,
+                            compass_bias=lambda: self.observer.compass_bias,
+                            line_override=line_override)
+
+    def _entering(self, s: Measurement) -> bool:
+        """True where the final approach takes over: the boat is before the ramp end,
+        within the entry distance along the axis, near its approach path and near the
+        end of its own path."""
+        probe = self._new_approach()
+        distance, lateral = probe.locate(s)
+        prof = probe.profile()
+        first = self.arrival.gates[0]
+        wanted_first, _ = prof.at(first)
+        entry = first + ENTRY_MARGIN + abs(wanted_first)
+        if not 0.0 < distance <= entry:
+            return False
+        wanted, _ = prof.at(distance)
+        if abs(lateral) > abs(wanted) + max(3.0, 0.15 * distance):
+            return False  # still coming in from the side: the plan brings it round first
+        # only on the plan's final straight: before it, the plan's path is what keeps the
+        # boat clear of what the station knows and the boat does not (traffic, re-plans)
+        return self._path_left(s) <= self._final_straight() + STRAIGHT_MARGIN
+
+    def _final_straight(self) -> float:
+        """Length of the path's final straight: its last legs on the ramp axis (every point
+        within AXIS_TOLERANCE of the line through the last waypoint along the last leg)."""
+        tr = self._path
+        a = tr.segment_heading(tr.segment_count - 1)
+        gx, gy = tr.points[-1]
+        length = 0.0
+        for i in range(tr.segment_count - 1, -1, -1):
+            ax, ay, _, _ = tr.segment(i)
+            if abs(-(ax - gx) * math.sin(a) + (ay - gy) * math.cos(a)) > AXIS_TOLERANCE:
+                break
+            length += tr.segment_length(i)
+        return length
+
+    def _path_left(self, s: Measurement) -> float:
+        """Path length from the boat's leg to the end of the path flown."""
+        tr = self._path
+        seg = min(self._segment, tr.segment_count - 1)
+        _, _, bx, by = tr.segment(seg)
+        left = math.hypot(bx - s.x, by - s.y)
+        return left + sum(tr.segment_length(i) for i in range(seg + 1, tr.segment_count))
+
+    def _begin_approach(self, s: Measurement) -> None:
+        approach = self._new_approach()
+        prof = approach.profile()
+        distance, _ = approach.locate(s)
+        g, a = approach.goal, approach.arrival
+        c, sn = math.cos(a), math.sin(a)
+        path = [(s.x, s.y)]
+        for d in (0.75 * distance, 0.5 * distance, 0.25 * distance, 0.0):
+            off, _ = prof.at(d)
+            path.append((g[0] - d * c - off * sn, g[1] - d * sn + off * c))
+        if self.path_check is not None and not self.path_check(
+                self._timed(path, prof.water_speed)):
+            self.bend_rejected = True  # keep to the plan's own final leg (the axis) ...
+            approach = self._new_approach(line_override=0.0)
+            first = self.arrival.gates[0]
+            if abs(prof.at(first)[0]) > self.gates.cross_track_limit(first):
+                # ... unless the drift carries it off the axis by more than a gate allows
+                self._start_go_around("approach path blocked by an obstacle")
+                return
+        self._approach = approach
+        self.gates.joined(distance)
+
+    def _timed(self, points: list[tuple[float, float]], speed: float) -> Trajectory:
+        rows, t = [(points[0][0], points[0][1], self._tau)], self._tau
+        for (ax, ay), (bx, by) in itertools.pairwise(points):
+            t += max(math.hypot(bx - ax, by - ay), 0.1) / max(speed, 0.3)
+            rows.append((bx, by, t))
+        return Trajectory.from_xyt(rows)
+
+    def _nav_ok(self) -> bool:
+        """An RTK-class fix, not dead-reckoned through an outage."""
+        return (self.sensors.profile.gnss.fix_type >= 6 and self.sensors.fix_ok
+                and self.sensors.fix_age < 1.0)
+
+    def _start_go_around(self, reason: str) -> None:
+        self._back_heading = self._meas.psi
+        self.go_around = reason
+        self.go_arounds += 1
+        self._phase = "go_around"
+        self._approach, self._escape, self._standby = None, None, None
+        self.pilot.reset()
+
+    def _escape_command(self, s: Measurement) -> _Command | None:
+        """Back off from the ramp when close, then fly the first clear escape route to
+        the standby point."""
+        if self._escape is None:
+            if self._backing_off(s):  # the heading it had, astern over ground
+                return _Command(self._back_heading, -BACK_OFF_SPEED, None)
+            self._plan_escape(s)
+            if self._escape is None:
+                return None  # holding (standby) where it stopped
+        cmd = self._escape.update(s, self._tau)
+        if self._escape.finished:
+            self._phase = "standby"
+            self.keeper.hold_at(*self._standby)
+        return _Command(cmd.heading, cmd.speed, cmd.water_speed)
+
+    def _backing_off(self, s: Measurement) -> bool:
+        """True while a go-around close to the ramp must first back away from it."""
+        a = self._arrival_heading()
+        goal = self._wps[-1]
+        return -((s.x - goal.x) * math.cos(a) + (s.y - goal.y) * math.sin(a)) < BACK_OFF_TO
+
+    def _plan_escape(self, s: Measurement) -> None:
+        goal = (self._wps[-1].x, self._wps[-1].y)
+        standby = standby_point(goal, self._arrival_heading(), self.arrival)
+        plan = [(w.x, w.y) for w in self._wps]
+        for route in escape_routes((s.x, s.y), standby, plan, goal, self.arrival):
+            tr = self._timed(route, ESCAPE_SPEED)
+            if self.path_check is None or self.path_check(tr):
+                self._standby = route[-1]
+                self._escape = CompensatedAVLOS(tr, self.drift, LOOKAHEAD,
+                                                speed_max=self.params.top_speed,
+                                                arrive_radius=1.0, decide_at=-1.0)
+                return
+        self._standby = (s.x, s.y)  # nowhere clear to go: keep station here
+        self._phase = "standby"
+        self.keeper.hold_at(s.x, s.y)
 
     def _passed_end(self, s: Measurement) -> bool:
         """True once the boat is past the line through the last waypoint, across the last leg."""

@@ -33,7 +33,10 @@ def make_vehicle(kind: str, scenario: Scenario, sea_state: int = 0,
     by default) and `controller` (the PID autopilot by default) in the
     scenario's current and wind, plus waves of `sea_state` (0: none); it steers on
     `sensors` (a sim.sensors profile or its name: exact, rtk, gnss, rtk-moving-base)
-    drawn from `seed`, and its real hull differs from its controllers' model by `hull`.
+    drawn from `seed`, and its real hull differs from its controllers' model by `hull`;
+    on a recovery it flies the final approach with the scenario vessel's gates and goes
+    around when one is missed, and every path it makes up itself (the drift-aware
+    approach, the escape route) is checked against the scenario's obstacles first.
     'kinematic': follows the mission exactly (for protocol tests).
     """
     start = scenario.start
@@ -48,10 +51,16 @@ def make_vehicle(kind: str, scenario: Scenario, sea_state: int = 0,
     env = scenario.environment
     waves = WaveField.from_sea_state(sea_state, math.radians(env.wind_dir_deg)) \
         if sea_state > 0 else None
+    from usvstation.guidance.approach import ArrivalLimits, obstacle_check
+
+    recovery = scenario.kind == "recovery"
+    half = 0.5 * max(scenario.vessel.length, 2.0)  # the Otter's 2 m hull at least
     return DynamicVehicle(start.x, start.y, heading, speed=start.speed,
                           env=Environment.from_scenario(env, waves=waves),
                           accel=scenario.vessel.accel_max, guidance=guidance,
-                          controller=controller, sensors=sensors, hull=hull, seed=seed)
+                          controller=controller, sensors=sensors, hull=hull, seed=seed,
+                          arrival=ArrivalLimits.from_vessel(scenario.vessel) if recovery
+                          else None, path_check=obstacle_check(scenario.obstacles, half))
 
 
 @dataclass

@@ -198,7 +198,7 @@ _COMPASS = CompassSpec(noise_deg=0.5, lag_s=0.2)
 _GYRO = GyroSpec(bias_deg_s=0.05, noise_deg_s=0.1)
 
 SENSOR_PROFILES: dict[str, SensorProfile] = {
-    "exact": SensorProfile("exact"),
+    "exact": SensorProfile("exact", GnssSpec(fix_type=6)),  # the truth: as good as RTK
     # RTK fixed on the boat: 0.02 m per axis, 10 Hz, 50 ms old.
     "rtk": SensorProfile("rtk", GnssSpec(
         white_std_m=0.02, bias_std_m=0.005, bias_tau_s=300.0, velocity_std_mps=0.03,

@@ -41,6 +41,7 @@ JUDGE_DT = 0.1  # s of simulated time between the judge's samples
 OPERATOR_DT = 0.5  # how often the mate looks at the console
 CONFIRM_DELAY_S = 4.0  # the mate's reaction to a proposed re-plan (replan = confirm)
 RESUME_EVERY_S = 5.0  # how often the mate tries RESUME on a boat that stopped on its own
+MAX_APPROACHES = 3  # approaches the mate tries before aborting (the first plus two)
 OTTER_LENGTH_M = 2.0  # the simulated boat (dynamics/params.py otter())
 OTTER_PLAN_SPEED = 2.0  # m/s: the fastest a trial plans the Otter (top speed 3.09 m/s)
 TURN_RATE_DEG_S = 2.0  # how fast the mother ship changes course
@@ -307,6 +308,7 @@ class Operator:
         self.notes: list[str] = []
         self.confirmed: set[str] = set()
         self.planned_s: float | None = None  # the plan's duration
+        self.approaches = 0  # go-arounds answered (a new approach, or at the last, ABORT)
 
     async def _wait(self, path: str, done: Any, limit_s: float) -> dict | None:
         """GET `path` every OPERATOR_DT until `done(body)`; None after `limit_s`."""
@@ -344,6 +346,11 @@ class Operator:
             self.notes.append(f"upload failed: {mission and mission['error']}")
             return None
         return mission["id"]
+
+    @staticmethod
+    def at_standby(boat: dict[str, Any]) -> int:
+        """How many times the boat has said it waits at its standby point (STATUSTEXT)."""
+        return sum(1 for s in boat["status"] if "at standby" in s["text"])
 
     async def boat(self) -> dict[str, Any]:
         """GET /api/boat: what the console shows of the boat."""
@@ -473,6 +480,15 @@ async def _sail(clock: SimClock, station: Station, operator: Operator, judge: Ju
                 and clock.now() - resumed_at >= RESUME_EVERY_S:
             resumed_at = clock.now()
             await operator.command("resume")
+        elif state == "GO_AROUND" and operator.at_standby(boat) > operator.approaches:
+            # the boat went around and waits at its standby point: the console offers a new
+            # approach; the mate takes it up to MAX_APPROACHES times, then aborts
+            operator.approaches += 1
+            if operator.approaches < MAX_APPROACHES:
+                await operator.command("resume")
+            else:
+                await operator.command("abort")
+                return
         if ep.replan == "confirm":
             await operator.confirm_replans(seen)
         await clock.sleep(OPERATOR_DT)
@@ -515,6 +531,7 @@ def _line(ep: Episode, judge: Judge, operator: Operator | None, alerts: list[str
         "min_hull_clearance_m": (None if math.isinf(judge.min_clearance_m)
                                  else round(judge.min_clearance_m, 3)),
         "alerts": len(alerts), "alert_kinds": sorted(set(alerts)),
+        "go_arounds": judge.states.count("GO_AROUND"),
         "replans": len(replans),
         "replans_applied": sum(1 for r in replans if r["state"] == "applied"),
         "duration_s": duration, "slip_s": slip, "states": judge.states, "notes": notes,

@@ -387,7 +387,8 @@ static void check_invariants(void)
     const usv_mission_t *a = &boat.mission[boat.active];
     const usv_mission_t *g = &boat.mission[boat.active ^ 1u];
     uint16_t i;
-    CHECK(boat.state <= USV_BOAT_STATE_FAILSAFE);
+    CHECK(boat.state <= USV_BOAT_STATE_GO_AROUND);
+    CHECK(!boat.at_standby || boat.go_around);
     CHECK(boat.staging <= USV_STAGING_VERIFIED);
     CHECK(boat.active <= 1u);
     CHECK(boat.rx_head < USV_RX_RING && boat.rx_tail < USV_RX_RING);

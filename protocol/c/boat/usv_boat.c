@@ -15,6 +15,14 @@
 #define KEEP_RADIUS_M 1.5f
 #define KEEP_SPEED_MPS 0.4f
 #define TRACK_GAIN 0.4f /* 1/s: position error to velocity correction */
+/* approach gates (m from the last waypoint along the final leg), go-around, over capacity */
+#define GATES 3
+static const float GATE_M[GATES] = {30.0f, 15.0f, 5.0f};
+#define GATE_JOIN_M 10.0f    /* a gate less than this inside where the final leg begins: skipped */
+#define ARRIVAL_OFFSET_M 0.3f
+#define STANDBY_M 50.0f      /* the go-around stands by at the first item this far back */
+#define BACK_OFF_M 12.0f     /* a go-around closer to the ramp first backs away to here */
+#define OVER_CAPACITY_M 5.0f /* keeping station this far off its point: over capacity */
 
 enum { STAGE_BEGIN = 1, STAGE_ITEM = 2, STAGE_END = 3, STAGE_READ = 4 };
 
@@ -345,6 +353,7 @@ static void fill_state(usv_boat_t *b, mavlink_usv_mission_state_t *s)
         s->swap_at_ms = b->staging == USV_STAGING_VERIFIED ? b->staged_swap_at : 0u;
     }
     s->station_session = b->station_session;
+    s->flags = b->flags;
 }
 
 static void swap_if_due(usv_boat_t *b, uint32_t now);
@@ -374,7 +383,8 @@ static void send_heartbeat(usv_boat_t *b)
     h.custom_mode = b->state;
     if (b->state == USV_BOAT_STATE_FAILSAFE) {
         h.system_status = MAV_STATE_CRITICAL;
-    } else if (b->state == USV_BOAT_STATE_RUNNING || b->state == USV_BOAT_STATE_HOLD) {
+    } else if (b->state == USV_BOAT_STATE_RUNNING || b->state == USV_BOAT_STATE_HOLD ||
+               b->state == USV_BOAT_STATE_GO_AROUND) {
         h.system_status = MAV_STATE_ACTIVE;
     } else {
         h.system_status = MAV_STATE_STANDBY;
@@ -545,7 +555,7 @@ static void on_begin(usv_boat_t *b, const mavlink_message_t *msg, uint32_t now)
     usv_mission_t *g = staged_mission(b);
     text_t t;
     int under_way = b->state == USV_BOAT_STATE_RUNNING || b->state == USV_BOAT_STATE_HOLD ||
-                    b->state == USV_BOAT_STATE_FAILSAFE;
+                    b->state == USV_BOAT_STATE_FAILSAFE || b->state == USV_BOAT_STATE_GO_AROUND;
     mavlink_msg_usv_mission_begin_decode(msg, &m);
     if (m.mission_id == 0u) {
         send_mission_ack(b, msg, 0, 0, USV_MISSION_UNKNOWN_MISSION, STAGE_BEGIN);
@@ -838,14 +848,18 @@ static uint8_t do_command(usv_boat_t *b, uint16_t cmd, const mavlink_command_int
         b->started = 1;
         b->t0_ms = now;
         b->current_seq = 0;
+        b->gate_next = b->gate_leg = b->go_around = 0;
         return MAV_RESULT_ACCEPTED;
     case MAV_CMD_USV_HOLD: /* always acts: whatever moves stops and keeps station */
         if (b->state == USV_BOAT_STATE_RUNNING) {
             b->hold_since_ms = now;
             hold_here(b);
         }
+        if (b->state == USV_BOAT_STATE_GO_AROUND) {
+            hold_here(b);
+        }
         if (b->state == USV_BOAT_STATE_RUNNING || b->state == USV_BOAT_STATE_FAILSAFE ||
-            b->state == USV_BOAT_STATE_HOLD) {
+            b->state == USV_BOAT_STATE_HOLD || b->state == USV_BOAT_STATE_GO_AROUND) {
             b->state = USV_BOAT_STATE_HOLD;
             b->guidance_on = 0;
         }
@@ -854,10 +868,25 @@ static uint8_t do_command(usv_boat_t *b, uint16_t cmd, const mavlink_command_int
         if (b->state == USV_BOAT_STATE_RUNNING) {
             return MAV_RESULT_ACCEPTED;
         }
+        if (b->state == USV_BOAT_STATE_GO_AROUND) { /* a new approach, from standby only */
+            if (!b->at_standby) {
+                *reason = USV_COMMAND_REASON_WRONG_STATE;
+                return MAV_RESULT_DENIED;
+            }
+            b->t0_ms = now - a->t_ms[b->standby_seq]; /* the mission from the standby item */
+            b->current_seq = b->standby_seq;
+            b->gate_next = b->gate_leg = b->go_around = b->at_standby = 0;
+            b->state = USV_BOAT_STATE_RUNNING;
+            return MAV_RESULT_ACCEPTED;
+        }
         if ((b->state != USV_BOAT_STATE_HOLD && b->state != USV_BOAT_STATE_FAILSAFE) ||
             !b->has_active) {
             *reason = USV_COMMAND_REASON_WRONG_STATE;
             return MAV_RESULT_DENIED;
+        }
+        if (b->go_around) { /* back to the go-around it was flying */
+            b->state = USV_BOAT_STATE_GO_AROUND;
+            return MAV_RESULT_ACCEPTED;
         }
         b->t0_ms += now - b->hold_since_ms; /* the schedule shifted by the time held */
         b->state = USV_BOAT_STATE_RUNNING;
@@ -868,6 +897,7 @@ static uint8_t do_command(usv_boat_t *b, uint16_t cmd, const mavlink_command_int
         b->started = 0;
         b->guidance_on = 0;
         b->current_seq = 0;
+        b->go_around = b->at_standby = 0;
         b->state = USV_BOAT_STATE_ABORTED;
         return MAV_RESULT_ACCEPTED;
     default:
@@ -1160,13 +1190,111 @@ static void steer(usv_boat_t *b, float course, float speed)
 static void keep_station(usv_boat_t *b)
 {
     float n, e, d;
+    text_t t;
     local_ne(b->nav.lat_e7, b->nav.lon_e7, b->hold_lat, b->hold_lon, &n, &e);
     d = sqrtf(n * n + e * e);
+    if (d > OVER_CAPACITY_M && !(b->flags & USV_STATE_FLAG_OVER_CAPACITY)) {
+        b->flags |= USV_STATE_FLAG_OVER_CAPACITY;
+        text_begin(&t, "current exceeds what the boat can hold: drifting");
+        send_text(b, MAV_SEVERITY_WARNING, &t);
+    } else if (d < 2.0f * KEEP_RADIUS_M) {
+        b->flags &= (uint8_t)~USV_STATE_FLAG_OVER_CAPACITY;
+    }
     if (d < KEEP_RADIUS_M) {
         set_thrust(b, 0.0f, 0.0f);
         return;
     }
     steer(b, atan2f(e, n), clampf(0.3f * d, 0.0f, KEEP_SPEED_MPS));
+}
+
+/* A missed approach gate: back away from the ramp if close, then go to the standby item
+ * (the first mission item at least STANDBY_M back from the last) and keep station there. */
+static void start_go_around(usv_boat_t *b, float gate, const char *why, float value)
+{
+    const usv_mission_t *m = active_mission(b);
+    uint16_t last = (uint16_t)(m->count - 1u), k = last;
+    text_t t;
+    while (k > 0u) {
+        float n, e;
+        k--;
+        local_ne(m->lat[last], m->lon[last], m->lat[k], m->lon[k], &n, &e);
+        if (sqrtf(n * n + e * e) >= STANDBY_M) {
+            break;
+        }
+    }
+    b->standby_seq = k;
+    b->go_around = 1;
+    b->at_standby = 0;
+    b->guidance_on = 0;
+    b->state = USV_BOAT_STATE_GO_AROUND;
+    text_begin(&t, "go-around: gate ");
+    tx_uint(&t, (uint32_t)gate);
+    tx_str(&t, " m: ");
+    tx_str(&t, why);
+    if (value >= 0.0f) {
+        tx_str(&t, " ");
+        tx_metres(&t, value);
+    }
+    send_text(b, MAV_SEVERITY_WARNING, &t);
+}
+
+/* The gates of the final leg; `d`: metres to go along it, `xte`: cross-track (m). Returns 1
+ * when a gate was missed (the boat now goes around). */
+static int check_gates(usv_boat_t *b, float d, float xte, float leg_course)
+{
+    if (!b->gate_leg) { /* joined the final leg: gates too close inside it cannot be met */
+        b->gate_leg = 1;
+        while (b->gate_next < GATES - 1 && GATE_M[b->gate_next] > d - GATE_JOIN_M) {
+            b->gate_next++;
+        }
+    }
+    if (b->gate_next < GATES && d <= GATE_M[b->gate_next]) {
+        float gate = GATE_M[b->gate_next];
+        float herr = fabsf(wrap_pi(b->nav.heading_rad - leg_course)) * (180.0f / PI_F);
+        b->gate_next++;
+        if (b->nav.fix_type < GPS_FIX_TYPE_RTK_FIXED) {
+            start_go_around(b, gate, "no RTK-class fix", -1.0f);
+            return 1;
+        }
+        if (fabsf(xte) > ARRIVAL_OFFSET_M * (0.5f + gate / 4.0f)) {
+            start_go_around(b, gate, "cross-track", fabsf(xte));
+            return 1;
+        }
+        if (herr > (gate > 5.0f ? gate : 5.0f)) {
+            start_go_around(b, gate, "heading off (deg)", herr);
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static void fly_go_around(usv_boat_t *b)
+{
+    const usv_mission_t *m = active_mission(b);
+    uint16_t last = (uint16_t)(m->count - 1u);
+    float n, e, d;
+    text_t t;
+    if (b->at_standby) {
+        keep_station(b);
+        return;
+    }
+    if (dist_to(b, m->lat[last], m->lon[last]) < BACK_OFF_M) {
+        set_thrust(b, -400.0f, -400.0f); /* astern, away from the ramp */
+        return;
+    }
+    local_ne(b->nav.lat_e7, b->nav.lon_e7, m->lat[b->standby_seq], m->lon[b->standby_seq], &n,
+             &e);
+    d = sqrtf(n * n + e * e);
+    if (d <= 2.0f * KEEP_RADIUS_M) {
+        b->at_standby = 1;
+        b->hold_lat = m->lat[b->standby_seq];
+        b->hold_lon = m->lon[b->standby_seq];
+        text_begin(&t, "go-around: at standby, RESUME to approach");
+        send_text(b, MAV_SEVERITY_INFO, &t);
+        keep_station(b);
+        return;
+    }
+    steer(b, atan2f(e, n), clampf(TRACK_GAIN * d, 0.5f, 1.5f));
 }
 
 /* Track the timed waypoints: the reference point moves linearly in time along each leg;
@@ -1185,6 +1313,19 @@ static void track(usv_boat_t *b, uint32_t now)
         i++;
     }
     b->current_seq = i;
+    if (last > 0u) { /* the approach gates on the final leg */
+        float fn, fe, gn, ge, flen, fd, fx;
+        local_ne(m->lat[last - 1u], m->lon[last - 1u], m->lat[last], m->lon[last], &fn, &fe);
+        local_ne(m->lat[last], m->lon[last], b->nav.lat_e7, b->nav.lon_e7, &gn, &ge);
+        flen = sqrtf(fn * fn + fe * fe);
+        if (flen > 1e-3f && i + 1u >= last) {
+            fd = -(gn * fn + ge * fe) / flen;
+            fx = (fe * gn - fn * ge) / flen;
+            if (fd > 0.0f && check_gates(b, fd, fx, atan2f(fe, fn))) {
+                return;
+            }
+        }
+    }
     if (i >= last) {
         float d = dist_to(b, m->lat[last], m->lon[last]);
         b->cross_track = 0.0f;
@@ -1239,6 +1380,7 @@ static void swap_if_due(usv_boat_t *b, uint32_t now)
             b->t0_ms = at; /* item times count from the swap instant */
             b->current_seq = 0;
             b->guidance_on = 0;
+            b->gate_next = b->gate_leg = 0;
             text_begin(&t, "swapped to mission ");
             tx_uint(&t, active_mission(b)->id);
             tx_str(&t, " at ");
@@ -1261,8 +1403,9 @@ static void tick(usv_boat_t *b, uint32_t now)
     /* failsafe: no valid frame from the paired station for the link timeout */
     if (b->station_heard && at_or_after(now, b->last_station_ms + b->cfg.link_timeout_ms)) {
         b->station_heard = 0;
-        if (b->state == USV_BOAT_STATE_RUNNING || b->state == USV_BOAT_STATE_HOLD) {
-            if (b->state == USV_BOAT_STATE_RUNNING) {
+        if (b->state == USV_BOAT_STATE_RUNNING || b->state == USV_BOAT_STATE_HOLD ||
+            b->state == USV_BOAT_STATE_GO_AROUND) {
+            if (b->state != USV_BOAT_STATE_HOLD) {
                 b->hold_since_ms = now;
                 hold_here(b);
             }
@@ -1290,6 +1433,9 @@ static void tick(usv_boat_t *b, uint32_t now)
     switch (b->state) {
     case USV_BOAT_STATE_RUNNING:
         track(b, now);
+        break;
+    case USV_BOAT_STATE_GO_AROUND:
+        fly_go_around(b);
         break;
     case USV_BOAT_STATE_READY:
     case USV_BOAT_STATE_HOLD:

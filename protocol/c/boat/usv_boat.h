@@ -152,6 +152,14 @@ typedef struct {
     float guidance_heading, guidance_speed;
     uint8_t guidance_on;
 
+    /* approach gates and go-around (protocol/README.md section 6) */
+    uint8_t gate_next;     /* index of the next approach gate to check */
+    uint8_t gate_leg;      /* the final leg was reached (late gates skipped) */
+    uint8_t go_around;     /* a go-around is under way (GO_AROUND, or HOLD/FAILSAFE from it) */
+    uint8_t at_standby;
+    uint16_t standby_seq;  /* the mission item the go-around stands by at */
+    uint8_t flags;         /* USV_STATE_FLAG reported in USV_MISSION_STATE */
+
     /* ramp pose (latest) */
     uint32_t ramp_time_ms;
     int32_t ramp_lat, ramp_lon;

@@ -375,8 +375,18 @@ USV_BOAT_STATE_ABORTED = 5
 enums["USV_BOAT_STATE"][5] = EnumEntry("USV_BOAT_STATE_ABORTED", """Stopped by ABORT; active and staged missions are discarded, propellers stopped.""")
 USV_BOAT_STATE_FAILSAFE = 6
 enums["USV_BOAT_STATE"][6] = EnumEntry("USV_BOAT_STATE_FAILSAFE", """No valid frame from the paired station for the link timeout: keeping station until the link returns and the station sends RESUME or ABORT.""")
-USV_BOAT_STATE_ENUM_END = 7
-enums["USV_BOAT_STATE"][7] = EnumEntry("USV_BOAT_STATE_ENUM_END", """""")
+USV_BOAT_STATE_GO_AROUND = 7
+enums["USV_BOAT_STATE"][7] = EnumEntry("USV_BOAT_STATE_GO_AROUND", """An approach gate was missed: the boat backs away from the ramp if close, flies its escape route to the standby point and keeps station there; RESUME starts a new approach from the standby point (reason in STATUSTEXT).""")
+USV_BOAT_STATE_ENUM_END = 8
+enums["USV_BOAT_STATE"][8] = EnumEntry("USV_BOAT_STATE_ENUM_END", """""")
+
+# USV_STATE_FLAG
+enums["USV_STATE_FLAG"] = Enum()
+enums["USV_STATE_FLAG"].bitmask = True
+USV_STATE_FLAG_OVER_CAPACITY = 1
+enums["USV_STATE_FLAG"][1] = EnumEntry("USV_STATE_FLAG_OVER_CAPACITY", """Keeping station, the boat cannot hold its point against the current (it drifts or is about to); also in STATUSTEXT.""")
+USV_STATE_FLAG_ENUM_END = 2
+enums["USV_STATE_FLAG"][2] = EnumEntry("USV_STATE_FLAG_ENUM_END", """""")
 
 # USV_STAGING_STATE
 enums["USV_STAGING_STATE"] = Enum()
@@ -6852,22 +6862,22 @@ class MAVLink_usv_mission_state_message(MAVLink_message):
 
     id = MAVLINK_MSG_ID_USV_MISSION_STATE
     msgname = "USV_MISSION_STATE"
-    fieldnames = ["uptime_ms", "boot_id", "state", "active_id", "active_crc32", "active_count", "current_seq", "staging", "staged_id", "staged_crc32", "staged_received", "staged_count", "swap_at_ms", "station_session", "rejected"]
-    ordered_fieldnames = ["uptime_ms", "boot_id", "active_id", "active_crc32", "staged_id", "staged_crc32", "swap_at_ms", "station_session", "active_count", "current_seq", "staged_received", "staged_count", "rejected", "state", "staging"]
-    fieldtypes = ["uint32_t", "uint32_t", "uint8_t", "uint32_t", "uint32_t", "uint16_t", "uint16_t", "uint8_t", "uint32_t", "uint32_t", "uint16_t", "uint16_t", "uint32_t", "uint32_t", "uint16_t"]
-    fielddisplays_by_name: Dict[str, str] = {}
-    fieldenums_by_name: Dict[str, str] = {"state": "USV_BOAT_STATE", "staging": "USV_STAGING_STATE"}
+    fieldnames = ["uptime_ms", "boot_id", "state", "active_id", "active_crc32", "active_count", "current_seq", "staging", "staged_id", "staged_crc32", "staged_received", "staged_count", "swap_at_ms", "station_session", "rejected", "flags"]
+    ordered_fieldnames = ["uptime_ms", "boot_id", "active_id", "active_crc32", "staged_id", "staged_crc32", "swap_at_ms", "station_session", "active_count", "current_seq", "staged_received", "staged_count", "rejected", "state", "staging", "flags"]
+    fieldtypes = ["uint32_t", "uint32_t", "uint8_t", "uint32_t", "uint32_t", "uint16_t", "uint16_t", "uint8_t", "uint32_t", "uint32_t", "uint16_t", "uint16_t", "uint32_t", "uint32_t", "uint16_t", "uint8_t"]
+    fielddisplays_by_name: Dict[str, str] = {"flags": "bitmask"}
+    fieldenums_by_name: Dict[str, str] = {"state": "USV_BOAT_STATE", "staging": "USV_STAGING_STATE", "flags": "USV_STATE_FLAG"}
     fieldunits_by_name: Dict[str, str] = {"uptime_ms": "ms", "swap_at_ms": "ms"}
-    native_format = bytearray(b"<IIIIIIIIHHHHHBB")
-    orders = [0, 1, 13, 2, 3, 8, 9, 14, 4, 5, 10, 11, 6, 7, 12]
-    lengths = [1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1]
-    array_lengths = [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]
+    native_format = bytearray(b"<IIIIIIIIHHHHHBBB")
+    orders = [0, 1, 13, 2, 3, 8, 9, 14, 4, 5, 10, 11, 6, 7, 12, 15]
+    lengths = [1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1]
+    array_lengths = [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]
     crc_extra = 100
-    unpacker = struct.Struct("<IIIIIIIIHHHHHBB")
+    unpacker = struct.Struct("<IIIIIIIIHHHHHBBB")
     instance_field = None
     instance_offset = -1
 
-    def __init__(self, uptime_ms: int, boot_id: int, state: int, active_id: int, active_crc32: int, active_count: int, current_seq: int, staging: int, staged_id: int, staged_crc32: int, staged_received: int, staged_count: int, swap_at_ms: int, station_session: int, rejected: int):
+    def __init__(self, uptime_ms: int, boot_id: int, state: int, active_id: int, active_crc32: int, active_count: int, current_seq: int, staging: int, staged_id: int, staged_crc32: int, staged_received: int, staged_count: int, swap_at_ms: int, station_session: int, rejected: int, flags: int = 0):
         MAVLink_message.__init__(self, MAVLink_usv_mission_state_message.id, MAVLink_usv_mission_state_message.msgname)
         self._fieldnames = MAVLink_usv_mission_state_message.fieldnames
         self._instance_field = MAVLink_usv_mission_state_message.instance_field
@@ -6887,9 +6897,10 @@ class MAVLink_usv_mission_state_message(MAVLink_message):
         self.swap_at_ms = swap_at_ms
         self.station_session = station_session
         self.rejected = rejected
+        self.flags = flags
 
     def pack(self, mav: "MAVLink", force_mavlink1: bool = False) -> bytes:
-        return self._pack(mav, self.crc_extra, self.unpacker.pack(self.uptime_ms, self.boot_id, self.active_id, self.active_crc32, self.staged_id, self.staged_crc32, self.swap_at_ms, self.station_session, self.active_count, self.current_seq, self.staged_received, self.staged_count, self.rejected, self.state, self.staging), force_mavlink1=force_mavlink1)
+        return self._pack(mav, self.crc_extra, self.unpacker.pack(self.uptime_ms, self.boot_id, self.active_id, self.active_crc32, self.staged_id, self.staged_crc32, self.swap_at_ms, self.station_session, self.active_count, self.current_seq, self.staged_received, self.staged_count, self.rejected, self.state, self.staging, self.flags), force_mavlink1=force_mavlink1)
 
 
 # Define name on the class for backwards compatibility (it is now msgname).
@@ -17902,7 +17913,7 @@ class MAVLink(object):
         """
         self.send(self.usv_mission_end_encode(target_system, target_component, mission_id, crc32, count), force_mavlink1=force_mavlink1)
 
-    def usv_mission_state_encode(self, uptime_ms: int, boot_id: int, state: int, active_id: int, active_crc32: int, active_count: int, current_seq: int, staging: int, staged_id: int, staged_crc32: int, staged_received: int, staged_count: int, swap_at_ms: int, station_session: int, rejected: int) -> MAVLink_usv_mission_state_message:
+    def usv_mission_state_encode(self, uptime_ms: int, boot_id: int, state: int, active_id: int, active_crc32: int, active_count: int, current_seq: int, staging: int, staged_id: int, staged_crc32: int, staged_received: int, staged_count: int, swap_at_ms: int, station_session: int, rejected: int, flags: int = 0) -> MAVLink_usv_mission_state_message:
         """
         What the boat holds, sent right after every HEARTBEAT and on every
         change: the station derives its mission states from this
@@ -17923,11 +17934,12 @@ class MAVLink(object):
         swap_at_ms                : Scheduled hot swap instant (0: none). [ms] (type:uint32_t)
         station_session           : Session of the paired station last heard (0: none). (type:uint32_t)
         rejected                  : Frames refused since boot (unsigned, bad signature, replayed, wrong sender), saturating. (type:uint16_t)
+        flags                     : Conditions reported with the state (USV_STATE_FLAG). (type:uint8_t, values:USV_STATE_FLAG)
 
         """
-        return MAVLink_usv_mission_state_message(uptime_ms, boot_id, state, active_id, active_crc32, active_count, current_seq, staging, staged_id, staged_crc32, staged_received, staged_count, swap_at_ms, station_session, rejected)
+        return MAVLink_usv_mission_state_message(uptime_ms, boot_id, state, active_id, active_crc32, active_count, current_seq, staging, staged_id, staged_crc32, staged_received, staged_count, swap_at_ms, station_session, rejected, flags)
 
-    def usv_mission_state_send(self, uptime_ms: int, boot_id: int, state: int, active_id: int, active_crc32: int, active_count: int, current_seq: int, staging: int, staged_id: int, staged_crc32: int, staged_received: int, staged_count: int, swap_at_ms: int, station_session: int, rejected: int, force_mavlink1: bool = False) -> None:
+    def usv_mission_state_send(self, uptime_ms: int, boot_id: int, state: int, active_id: int, active_crc32: int, active_count: int, current_seq: int, staging: int, staged_id: int, staged_crc32: int, staged_received: int, staged_count: int, swap_at_ms: int, station_session: int, rejected: int, flags: int = 0, force_mavlink1: bool = False) -> None:
         """
         What the boat holds, sent right after every HEARTBEAT and on every
         change: the station derives its mission states from this
@@ -17948,9 +17960,10 @@ class MAVLink(object):
         swap_at_ms                : Scheduled hot swap instant (0: none). [ms] (type:uint32_t)
         station_session           : Session of the paired station last heard (0: none). (type:uint32_t)
         rejected                  : Frames refused since boot (unsigned, bad signature, replayed, wrong sender), saturating. (type:uint16_t)
+        flags                     : Conditions reported with the state (USV_STATE_FLAG). (type:uint8_t, values:USV_STATE_FLAG)
 
         """
-        self.send(self.usv_mission_state_encode(uptime_ms, boot_id, state, active_id, active_crc32, active_count, current_seq, staging, staged_id, staged_crc32, staged_received, staged_count, swap_at_ms, station_session, rejected), force_mavlink1=force_mavlink1)
+        self.send(self.usv_mission_state_encode(uptime_ms, boot_id, state, active_id, active_crc32, active_count, current_seq, staging, staged_id, staged_crc32, staged_received, staged_count, swap_at_ms, station_session, rejected, flags), force_mavlink1=force_mavlink1)
 
     def usv_mission_read_encode(self, target_system: int, target_component: int, mission_id: int, seq: int) -> MAVLink_usv_mission_read_message:
         """

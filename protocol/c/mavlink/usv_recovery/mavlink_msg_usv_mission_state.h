@@ -22,11 +22,12 @@ typedef struct __mavlink_usv_mission_state_t {
  uint16_t rejected; /*<  Frames refused since boot (unsigned, bad signature, replayed, wrong sender), saturating.*/
  uint8_t state; /*<  Boat state.*/
  uint8_t staging; /*<  Staging state.*/
+ uint8_t flags; /*<  Conditions reported with the state (USV_STATE_FLAG).*/
 } mavlink_usv_mission_state_t;
 
-#define MAVLINK_MSG_ID_USV_MISSION_STATE_LEN 44
+#define MAVLINK_MSG_ID_USV_MISSION_STATE_LEN 45
 #define MAVLINK_MSG_ID_USV_MISSION_STATE_MIN_LEN 44
-#define MAVLINK_MSG_ID_44004_LEN 44
+#define MAVLINK_MSG_ID_44004_LEN 45
 #define MAVLINK_MSG_ID_44004_MIN_LEN 44
 
 #define MAVLINK_MSG_ID_USV_MISSION_STATE_CRC 100
@@ -38,7 +39,7 @@ typedef struct __mavlink_usv_mission_state_t {
 #define MAVLINK_MESSAGE_INFO_USV_MISSION_STATE { \
     44004, \
     "USV_MISSION_STATE", \
-    15, \
+    16, \
     {  { "uptime_ms", NULL, MAVLINK_TYPE_UINT32_T, 0, 0, offsetof(mavlink_usv_mission_state_t, uptime_ms) }, \
          { "boot_id", NULL, MAVLINK_TYPE_UINT32_T, 0, 4, offsetof(mavlink_usv_mission_state_t, boot_id) }, \
          { "state", NULL, MAVLINK_TYPE_UINT8_T, 0, 42, offsetof(mavlink_usv_mission_state_t, state) }, \
@@ -54,12 +55,13 @@ typedef struct __mavlink_usv_mission_state_t {
          { "swap_at_ms", NULL, MAVLINK_TYPE_UINT32_T, 0, 24, offsetof(mavlink_usv_mission_state_t, swap_at_ms) }, \
          { "station_session", NULL, MAVLINK_TYPE_UINT32_T, 0, 28, offsetof(mavlink_usv_mission_state_t, station_session) }, \
          { "rejected", NULL, MAVLINK_TYPE_UINT16_T, 0, 40, offsetof(mavlink_usv_mission_state_t, rejected) }, \
+         { "flags", NULL, MAVLINK_TYPE_UINT8_T, 0, 44, offsetof(mavlink_usv_mission_state_t, flags) }, \
          } \
 }
 #else
 #define MAVLINK_MESSAGE_INFO_USV_MISSION_STATE { \
     "USV_MISSION_STATE", \
-    15, \
+    16, \
     {  { "uptime_ms", NULL, MAVLINK_TYPE_UINT32_T, 0, 0, offsetof(mavlink_usv_mission_state_t, uptime_ms) }, \
          { "boot_id", NULL, MAVLINK_TYPE_UINT32_T, 0, 4, offsetof(mavlink_usv_mission_state_t, boot_id) }, \
          { "state", NULL, MAVLINK_TYPE_UINT8_T, 0, 42, offsetof(mavlink_usv_mission_state_t, state) }, \
@@ -75,6 +77,7 @@ typedef struct __mavlink_usv_mission_state_t {
          { "swap_at_ms", NULL, MAVLINK_TYPE_UINT32_T, 0, 24, offsetof(mavlink_usv_mission_state_t, swap_at_ms) }, \
          { "station_session", NULL, MAVLINK_TYPE_UINT32_T, 0, 28, offsetof(mavlink_usv_mission_state_t, station_session) }, \
          { "rejected", NULL, MAVLINK_TYPE_UINT16_T, 0, 40, offsetof(mavlink_usv_mission_state_t, rejected) }, \
+         { "flags", NULL, MAVLINK_TYPE_UINT8_T, 0, 44, offsetof(mavlink_usv_mission_state_t, flags) }, \
          } \
 }
 #endif
@@ -100,10 +103,11 @@ typedef struct __mavlink_usv_mission_state_t {
  * @param swap_at_ms [ms] Scheduled hot swap instant (0: none).
  * @param station_session  Session of the paired station last heard (0: none).
  * @param rejected  Frames refused since boot (unsigned, bad signature, replayed, wrong sender), saturating.
+ * @param flags  Conditions reported with the state (USV_STATE_FLAG).
  * @return length of the message in bytes (excluding serial stream start sign)
  */
 static inline uint16_t mavlink_msg_usv_mission_state_pack(uint8_t system_id, uint8_t component_id, mavlink_message_t* msg,
-                               uint32_t uptime_ms, uint32_t boot_id, uint8_t state, uint32_t active_id, uint32_t active_crc32, uint16_t active_count, uint16_t current_seq, uint8_t staging, uint32_t staged_id, uint32_t staged_crc32, uint16_t staged_received, uint16_t staged_count, uint32_t swap_at_ms, uint32_t station_session, uint16_t rejected)
+                               uint32_t uptime_ms, uint32_t boot_id, uint8_t state, uint32_t active_id, uint32_t active_crc32, uint16_t active_count, uint16_t current_seq, uint8_t staging, uint32_t staged_id, uint32_t staged_crc32, uint16_t staged_received, uint16_t staged_count, uint32_t swap_at_ms, uint32_t station_session, uint16_t rejected, uint8_t flags)
 {
 #if MAVLINK_NEED_BYTE_SWAP || !MAVLINK_ALIGNED_FIELDS
     char buf[MAVLINK_MSG_ID_USV_MISSION_STATE_LEN];
@@ -122,6 +126,7 @@ static inline uint16_t mavlink_msg_usv_mission_state_pack(uint8_t system_id, uin
     _mav_put_uint16_t(buf, 40, rejected);
     _mav_put_uint8_t(buf, 42, state);
     _mav_put_uint8_t(buf, 43, staging);
+    _mav_put_uint8_t(buf, 44, flags);
 
         memcpy(_MAV_PAYLOAD_NON_CONST(msg), buf, MAVLINK_MSG_ID_USV_MISSION_STATE_LEN);
 #else
@@ -141,6 +146,7 @@ static inline uint16_t mavlink_msg_usv_mission_state_pack(uint8_t system_id, uin
     packet.rejected = rejected;
     packet.state = state;
     packet.staging = staging;
+    packet.flags = flags;
 
         memcpy(_MAV_PAYLOAD_NON_CONST(msg), &packet, MAVLINK_MSG_ID_USV_MISSION_STATE_LEN);
 #endif
@@ -171,10 +177,11 @@ static inline uint16_t mavlink_msg_usv_mission_state_pack(uint8_t system_id, uin
  * @param swap_at_ms [ms] Scheduled hot swap instant (0: none).
  * @param station_session  Session of the paired station last heard (0: none).
  * @param rejected  Frames refused since boot (unsigned, bad signature, replayed, wrong sender), saturating.
+ * @param flags  Conditions reported with the state (USV_STATE_FLAG).
  * @return length of the message in bytes (excluding serial stream start sign)
  */
 static inline uint16_t mavlink_msg_usv_mission_state_pack_status(uint8_t system_id, uint8_t component_id, mavlink_status_t *_status, mavlink_message_t* msg,
-                               uint32_t uptime_ms, uint32_t boot_id, uint8_t state, uint32_t active_id, uint32_t active_crc32, uint16_t active_count, uint16_t current_seq, uint8_t staging, uint32_t staged_id, uint32_t staged_crc32, uint16_t staged_received, uint16_t staged_count, uint32_t swap_at_ms, uint32_t station_session, uint16_t rejected)
+                               uint32_t uptime_ms, uint32_t boot_id, uint8_t state, uint32_t active_id, uint32_t active_crc32, uint16_t active_count, uint16_t current_seq, uint8_t staging, uint32_t staged_id, uint32_t staged_crc32, uint16_t staged_received, uint16_t staged_count, uint32_t swap_at_ms, uint32_t station_session, uint16_t rejected, uint8_t flags)
 {
 #if MAVLINK_NEED_BYTE_SWAP || !MAVLINK_ALIGNED_FIELDS
     char buf[MAVLINK_MSG_ID_USV_MISSION_STATE_LEN];
@@ -193,6 +200,7 @@ static inline uint16_t mavlink_msg_usv_mission_state_pack_status(uint8_t system_
     _mav_put_uint16_t(buf, 40, rejected);
     _mav_put_uint8_t(buf, 42, state);
     _mav_put_uint8_t(buf, 43, staging);
+    _mav_put_uint8_t(buf, 44, flags);
 
         memcpy(_MAV_PAYLOAD_NON_CONST(msg), buf, MAVLINK_MSG_ID_USV_MISSION_STATE_LEN);
 #else
@@ -212,6 +220,7 @@ static inline uint16_t mavlink_msg_usv_mission_state_pack_status(uint8_t system_
     packet.rejected = rejected;
     packet.state = state;
     packet.staging = staging;
+    packet.flags = flags;
 
         memcpy(_MAV_PAYLOAD_NON_CONST(msg), &packet, MAVLINK_MSG_ID_USV_MISSION_STATE_LEN);
 #endif
@@ -245,11 +254,12 @@ static inline uint16_t mavlink_msg_usv_mission_state_pack_status(uint8_t system_
  * @param swap_at_ms [ms] Scheduled hot swap instant (0: none).
  * @param station_session  Session of the paired station last heard (0: none).
  * @param rejected  Frames refused since boot (unsigned, bad signature, replayed, wrong sender), saturating.
+ * @param flags  Conditions reported with the state (USV_STATE_FLAG).
  * @return length of the message in bytes (excluding serial stream start sign)
  */
 static inline uint16_t mavlink_msg_usv_mission_state_pack_chan(uint8_t system_id, uint8_t component_id, uint8_t chan,
                                mavlink_message_t* msg,
-                                   uint32_t uptime_ms,uint32_t boot_id,uint8_t state,uint32_t active_id,uint32_t active_crc32,uint16_t active_count,uint16_t current_seq,uint8_t staging,uint32_t staged_id,uint32_t staged_crc32,uint16_t staged_received,uint16_t staged_count,uint32_t swap_at_ms,uint32_t station_session,uint16_t rejected)
+                                   uint32_t uptime_ms,uint32_t boot_id,uint8_t state,uint32_t active_id,uint32_t active_crc32,uint16_t active_count,uint16_t current_seq,uint8_t staging,uint32_t staged_id,uint32_t staged_crc32,uint16_t staged_received,uint16_t staged_count,uint32_t swap_at_ms,uint32_t station_session,uint16_t rejected,uint8_t flags)
 {
 #if MAVLINK_NEED_BYTE_SWAP || !MAVLINK_ALIGNED_FIELDS
     char buf[MAVLINK_MSG_ID_USV_MISSION_STATE_LEN];
@@ -268,6 +278,7 @@ static inline uint16_t mavlink_msg_usv_mission_state_pack_chan(uint8_t system_id
     _mav_put_uint16_t(buf, 40, rejected);
     _mav_put_uint8_t(buf, 42, state);
     _mav_put_uint8_t(buf, 43, staging);
+    _mav_put_uint8_t(buf, 44, flags);
 
         memcpy(_MAV_PAYLOAD_NON_CONST(msg), buf, MAVLINK_MSG_ID_USV_MISSION_STATE_LEN);
 #else
@@ -287,6 +298,7 @@ static inline uint16_t mavlink_msg_usv_mission_state_pack_chan(uint8_t system_id
     packet.rejected = rejected;
     packet.state = state;
     packet.staging = staging;
+    packet.flags = flags;
 
         memcpy(_MAV_PAYLOAD_NON_CONST(msg), &packet, MAVLINK_MSG_ID_USV_MISSION_STATE_LEN);
 #endif
@@ -305,7 +317,7 @@ static inline uint16_t mavlink_msg_usv_mission_state_pack_chan(uint8_t system_id
  */
 static inline uint16_t mavlink_msg_usv_mission_state_encode(uint8_t system_id, uint8_t component_id, mavlink_message_t* msg, const mavlink_usv_mission_state_t* usv_mission_state)
 {
-    return mavlink_msg_usv_mission_state_pack(system_id, component_id, msg, usv_mission_state->uptime_ms, usv_mission_state->boot_id, usv_mission_state->state, usv_mission_state->active_id, usv_mission_state->active_crc32, usv_mission_state->active_count, usv_mission_state->current_seq, usv_mission_state->staging, usv_mission_state->staged_id, usv_mission_state->staged_crc32, usv_mission_state->staged_received, usv_mission_state->staged_count, usv_mission_state->swap_at_ms, usv_mission_state->station_session, usv_mission_state->rejected);
+    return mavlink_msg_usv_mission_state_pack(system_id, component_id, msg, usv_mission_state->uptime_ms, usv_mission_state->boot_id, usv_mission_state->state, usv_mission_state->active_id, usv_mission_state->active_crc32, usv_mission_state->active_count, usv_mission_state->current_seq, usv_mission_state->staging, usv_mission_state->staged_id, usv_mission_state->staged_crc32, usv_mission_state->staged_received, usv_mission_state->staged_count, usv_mission_state->swap_at_ms, usv_mission_state->station_session, usv_mission_state->rejected, usv_mission_state->flags);
 }
 
 /**
@@ -319,7 +331,7 @@ static inline uint16_t mavlink_msg_usv_mission_state_encode(uint8_t system_id, u
  */
 static inline uint16_t mavlink_msg_usv_mission_state_encode_chan(uint8_t system_id, uint8_t component_id, uint8_t chan, mavlink_message_t* msg, const mavlink_usv_mission_state_t* usv_mission_state)
 {
-    return mavlink_msg_usv_mission_state_pack_chan(system_id, component_id, chan, msg, usv_mission_state->uptime_ms, usv_mission_state->boot_id, usv_mission_state->state, usv_mission_state->active_id, usv_mission_state->active_crc32, usv_mission_state->active_count, usv_mission_state->current_seq, usv_mission_state->staging, usv_mission_state->staged_id, usv_mission_state->staged_crc32, usv_mission_state->staged_received, usv_mission_state->staged_count, usv_mission_state->swap_at_ms, usv_mission_state->station_session, usv_mission_state->rejected);
+    return mavlink_msg_usv_mission_state_pack_chan(system_id, component_id, chan, msg, usv_mission_state->uptime_ms, usv_mission_state->boot_id, usv_mission_state->state, usv_mission_state->active_id, usv_mission_state->active_crc32, usv_mission_state->active_count, usv_mission_state->current_seq, usv_mission_state->staging, usv_mission_state->staged_id, usv_mission_state->staged_crc32, usv_mission_state->staged_received, usv_mission_state->staged_count, usv_mission_state->swap_at_ms, usv_mission_state->station_session, usv_mission_state->rejected, usv_mission_state->flags);
 }
 
 /**
@@ -333,7 +345,7 @@ static inline uint16_t mavlink_msg_usv_mission_state_encode_chan(uint8_t system_
  */
 static inline uint16_t mavlink_msg_usv_mission_state_encode_status(uint8_t system_id, uint8_t component_id, mavlink_status_t* _status, mavlink_message_t* msg, const mavlink_usv_mission_state_t* usv_mission_state)
 {
-    return mavlink_msg_usv_mission_state_pack_status(system_id, component_id, _status, msg,  usv_mission_state->uptime_ms, usv_mission_state->boot_id, usv_mission_state->state, usv_mission_state->active_id, usv_mission_state->active_crc32, usv_mission_state->active_count, usv_mission_state->current_seq, usv_mission_state->staging, usv_mission_state->staged_id, usv_mission_state->staged_crc32, usv_mission_state->staged_received, usv_mission_state->staged_count, usv_mission_state->swap_at_ms, usv_mission_state->station_session, usv_mission_state->rejected);
+    return mavlink_msg_usv_mission_state_pack_status(system_id, component_id, _status, msg,  usv_mission_state->uptime_ms, usv_mission_state->boot_id, usv_mission_state->state, usv_mission_state->active_id, usv_mission_state->active_crc32, usv_mission_state->active_count, usv_mission_state->current_seq, usv_mission_state->staging, usv_mission_state->staged_id, usv_mission_state->staged_crc32, usv_mission_state->staged_received, usv_mission_state->staged_count, usv_mission_state->swap_at_ms, usv_mission_state->station_session, usv_mission_state->rejected, usv_mission_state->flags);
 }
 
 /**
@@ -355,10 +367,11 @@ static inline uint16_t mavlink_msg_usv_mission_state_encode_status(uint8_t syste
  * @param swap_at_ms [ms] Scheduled hot swap instant (0: none).
  * @param station_session  Session of the paired station last heard (0: none).
  * @param rejected  Frames refused since boot (unsigned, bad signature, replayed, wrong sender), saturating.
+ * @param flags  Conditions reported with the state (USV_STATE_FLAG).
  */
 #ifdef MAVLINK_USE_CONVENIENCE_FUNCTIONS
 
-static inline void mavlink_msg_usv_mission_state_send(mavlink_channel_t chan, uint32_t uptime_ms, uint32_t boot_id, uint8_t state, uint32_t active_id, uint32_t active_crc32, uint16_t active_count, uint16_t current_seq, uint8_t staging, uint32_t staged_id, uint32_t staged_crc32, uint16_t staged_received, uint16_t staged_count, uint32_t swap_at_ms, uint32_t station_session, uint16_t rejected)
+static inline void mavlink_msg_usv_mission_state_send(mavlink_channel_t chan, uint32_t uptime_ms, uint32_t boot_id, uint8_t state, uint32_t active_id, uint32_t active_crc32, uint16_t active_count, uint16_t current_seq, uint8_t staging, uint32_t staged_id, uint32_t staged_crc32, uint16_t staged_received, uint16_t staged_count, uint32_t swap_at_ms, uint32_t station_session, uint16_t rejected, uint8_t flags)
 {
 #if MAVLINK_NEED_BYTE_SWAP || !MAVLINK_ALIGNED_FIELDS
     char buf[MAVLINK_MSG_ID_USV_MISSION_STATE_LEN];
@@ -377,6 +390,7 @@ static inline void mavlink_msg_usv_mission_state_send(mavlink_channel_t chan, ui
     _mav_put_uint16_t(buf, 40, rejected);
     _mav_put_uint8_t(buf, 42, state);
     _mav_put_uint8_t(buf, 43, staging);
+    _mav_put_uint8_t(buf, 44, flags);
 
     _mav_finalize_message_chan_send(chan, MAVLINK_MSG_ID_USV_MISSION_STATE, buf, MAVLINK_MSG_ID_USV_MISSION_STATE_MIN_LEN, MAVLINK_MSG_ID_USV_MISSION_STATE_LEN, MAVLINK_MSG_ID_USV_MISSION_STATE_CRC);
 #else
@@ -396,6 +410,7 @@ static inline void mavlink_msg_usv_mission_state_send(mavlink_channel_t chan, ui
     packet.rejected = rejected;
     packet.state = state;
     packet.staging = staging;
+    packet.flags = flags;
 
     _mav_finalize_message_chan_send(chan, MAVLINK_MSG_ID_USV_MISSION_STATE, (const char *)&packet, MAVLINK_MSG_ID_USV_MISSION_STATE_MIN_LEN, MAVLINK_MSG_ID_USV_MISSION_STATE_LEN, MAVLINK_MSG_ID_USV_MISSION_STATE_CRC);
 #endif
@@ -409,7 +424,7 @@ static inline void mavlink_msg_usv_mission_state_send(mavlink_channel_t chan, ui
 static inline void mavlink_msg_usv_mission_state_send_struct(mavlink_channel_t chan, const mavlink_usv_mission_state_t* usv_mission_state)
 {
 #if MAVLINK_NEED_BYTE_SWAP || !MAVLINK_ALIGNED_FIELDS
-    mavlink_msg_usv_mission_state_send(chan, usv_mission_state->uptime_ms, usv_mission_state->boot_id, usv_mission_state->state, usv_mission_state->active_id, usv_mission_state->active_crc32, usv_mission_state->active_count, usv_mission_state->current_seq, usv_mission_state->staging, usv_mission_state->staged_id, usv_mission_state->staged_crc32, usv_mission_state->staged_received, usv_mission_state->staged_count, usv_mission_state->swap_at_ms, usv_mission_state->station_session, usv_mission_state->rejected);
+    mavlink_msg_usv_mission_state_send(chan, usv_mission_state->uptime_ms, usv_mission_state->boot_id, usv_mission_state->state, usv_mission_state->active_id, usv_mission_state->active_crc32, usv_mission_state->active_count, usv_mission_state->current_seq, usv_mission_state->staging, usv_mission_state->staged_id, usv_mission_state->staged_crc32, usv_mission_state->staged_received, usv_mission_state->staged_count, usv_mission_state->swap_at_ms, usv_mission_state->station_session, usv_mission_state->rejected, usv_mission_state->flags);
 #else
     _mav_finalize_message_chan_send(chan, MAVLINK_MSG_ID_USV_MISSION_STATE, (const char *)usv_mission_state, MAVLINK_MSG_ID_USV_MISSION_STATE_MIN_LEN, MAVLINK_MSG_ID_USV_MISSION_STATE_LEN, MAVLINK_MSG_ID_USV_MISSION_STATE_CRC);
 #endif
@@ -423,7 +438,7 @@ static inline void mavlink_msg_usv_mission_state_send_struct(mavlink_channel_t c
   is usually the receive buffer for the channel, and allows a reply to an
   incoming message with minimum stack space usage.
  */
-static inline void mavlink_msg_usv_mission_state_send_buf(mavlink_message_t *msgbuf, mavlink_channel_t chan,  uint32_t uptime_ms, uint32_t boot_id, uint8_t state, uint32_t active_id, uint32_t active_crc32, uint16_t active_count, uint16_t current_seq, uint8_t staging, uint32_t staged_id, uint32_t staged_crc32, uint16_t staged_received, uint16_t staged_count, uint32_t swap_at_ms, uint32_t station_session, uint16_t rejected)
+static inline void mavlink_msg_usv_mission_state_send_buf(mavlink_message_t *msgbuf, mavlink_channel_t chan,  uint32_t uptime_ms, uint32_t boot_id, uint8_t state, uint32_t active_id, uint32_t active_crc32, uint16_t active_count, uint16_t current_seq, uint8_t staging, uint32_t staged_id, uint32_t staged_crc32, uint16_t staged_received, uint16_t staged_count, uint32_t swap_at_ms, uint32_t station_session, uint16_t rejected, uint8_t flags)
 {
 #if MAVLINK_NEED_BYTE_SWAP || !MAVLINK_ALIGNED_FIELDS
     char *buf = (char *)msgbuf;
@@ -442,6 +457,7 @@ static inline void mavlink_msg_usv_mission_state_send_buf(mavlink_message_t *msg
     _mav_put_uint16_t(buf, 40, rejected);
     _mav_put_uint8_t(buf, 42, state);
     _mav_put_uint8_t(buf, 43, staging);
+    _mav_put_uint8_t(buf, 44, flags);
 
     _mav_finalize_message_chan_send(chan, MAVLINK_MSG_ID_USV_MISSION_STATE, buf, MAVLINK_MSG_ID_USV_MISSION_STATE_MIN_LEN, MAVLINK_MSG_ID_USV_MISSION_STATE_LEN, MAVLINK_MSG_ID_USV_MISSION_STATE_CRC);
 #else
@@ -461,6 +477,7 @@ static inline void mavlink_msg_usv_mission_state_send_buf(mavlink_message_t *msg
     packet->rejected = rejected;
     packet->state = state;
     packet->staging = staging;
+    packet->flags = flags;
 
     _mav_finalize_message_chan_send(chan, MAVLINK_MSG_ID_USV_MISSION_STATE, (const char *)packet, MAVLINK_MSG_ID_USV_MISSION_STATE_MIN_LEN, MAVLINK_MSG_ID_USV_MISSION_STATE_LEN, MAVLINK_MSG_ID_USV_MISSION_STATE_CRC);
 #endif
@@ -623,6 +640,16 @@ static inline uint16_t mavlink_msg_usv_mission_state_get_rejected(const mavlink_
 }
 
 /**
+ * @brief Get field flags from usv_mission_state message
+ *
+ * @return  Conditions reported with the state (USV_STATE_FLAG).
+ */
+static inline uint8_t mavlink_msg_usv_mission_state_get_flags(const mavlink_message_t* msg)
+{
+    return _MAV_RETURN_uint8_t(msg,  44);
+}
+
+/**
  * @brief Decode a usv_mission_state message into a struct
  *
  * @param msg The message to decode
@@ -646,6 +673,7 @@ static inline void mavlink_msg_usv_mission_state_decode(const mavlink_message_t*
     usv_mission_state->rejected = mavlink_msg_usv_mission_state_get_rejected(msg);
     usv_mission_state->state = mavlink_msg_usv_mission_state_get_state(msg);
     usv_mission_state->staging = mavlink_msg_usv_mission_state_get_staging(msg);
+    usv_mission_state->flags = mavlink_msg_usv_mission_state_get_flags(msg);
 #else
         uint8_t len = msg->len < MAVLINK_MSG_ID_USV_MISSION_STATE_LEN? msg->len : MAVLINK_MSG_ID_USV_MISSION_STATE_LEN;
         memset(usv_mission_state, 0, MAVLINK_MSG_ID_USV_MISSION_STATE_LEN);

@@ -296,7 +296,7 @@ static void mavlink_test_usv_mission_state(uint8_t system_id, uint8_t component_
         uint8_t buffer[MAVLINK_MAX_PACKET_LEN];
         uint16_t i;
     mavlink_usv_mission_state_t packet_in = {
-        963497464,963497672,963497880,963498088,963498296,963498504,963498712,963498920,18899,19003,19107,19211,19315,3,70
+        963497464,963497672,963497880,963498088,963498296,963498504,963498712,963498920,18899,19003,19107,19211,19315,3,70,137
     };
     mavlink_usv_mission_state_t packet1, packet2;
         memset(&packet1, 0, sizeof(packet1));
@@ -315,6 +315,7 @@ static void mavlink_test_usv_mission_state(uint8_t system_id, uint8_t component_
         packet1.rejected = packet_in.rejected;
         packet1.state = packet_in.state;
         packet1.staging = packet_in.staging;
+        packet1.flags = packet_in.flags;
         
         
 #ifdef MAVLINK_STATUS_FLAG_OUT_MAVLINK1
@@ -329,12 +330,12 @@ static void mavlink_test_usv_mission_state(uint8_t system_id, uint8_t component_
         MAVLINK_ASSERT(memcmp(&packet1, &packet2, sizeof(packet1)) == 0);
 
         memset(&packet2, 0, sizeof(packet2));
-    mavlink_msg_usv_mission_state_pack(system_id, component_id, &msg , packet1.uptime_ms , packet1.boot_id , packet1.state , packet1.active_id , packet1.active_crc32 , packet1.active_count , packet1.current_seq , packet1.staging , packet1.staged_id , packet1.staged_crc32 , packet1.staged_received , packet1.staged_count , packet1.swap_at_ms , packet1.station_session , packet1.rejected );
+    mavlink_msg_usv_mission_state_pack(system_id, component_id, &msg , packet1.uptime_ms , packet1.boot_id , packet1.state , packet1.active_id , packet1.active_crc32 , packet1.active_count , packet1.current_seq , packet1.staging , packet1.staged_id , packet1.staged_crc32 , packet1.staged_received , packet1.staged_count , packet1.swap_at_ms , packet1.station_session , packet1.rejected , packet1.flags );
     mavlink_msg_usv_mission_state_decode(&msg, &packet2);
         MAVLINK_ASSERT(memcmp(&packet1, &packet2, sizeof(packet1)) == 0);
 
         memset(&packet2, 0, sizeof(packet2));
-    mavlink_msg_usv_mission_state_pack_chan(system_id, component_id, MAVLINK_COMM_0, &msg , packet1.uptime_ms , packet1.boot_id , packet1.state , packet1.active_id , packet1.active_crc32 , packet1.active_count , packet1.current_seq , packet1.staging , packet1.staged_id , packet1.staged_crc32 , packet1.staged_received , packet1.staged_count , packet1.swap_at_ms , packet1.station_session , packet1.rejected );
+    mavlink_msg_usv_mission_state_pack_chan(system_id, component_id, MAVLINK_COMM_0, &msg , packet1.uptime_ms , packet1.boot_id , packet1.state , packet1.active_id , packet1.active_crc32 , packet1.active_count , packet1.current_seq , packet1.staging , packet1.staged_id , packet1.staged_crc32 , packet1.staged_received , packet1.staged_count , packet1.swap_at_ms , packet1.station_session , packet1.rejected , packet1.flags );
     mavlink_msg_usv_mission_state_decode(&msg, &packet2);
         MAVLINK_ASSERT(memcmp(&packet1, &packet2, sizeof(packet1)) == 0);
 
@@ -347,7 +348,7 @@ static void mavlink_test_usv_mission_state(uint8_t system_id, uint8_t component_
         MAVLINK_ASSERT(memcmp(&packet1, &packet2, sizeof(packet1)) == 0);
         
         memset(&packet2, 0, sizeof(packet2));
-    mavlink_msg_usv_mission_state_send(MAVLINK_COMM_1 , packet1.uptime_ms , packet1.boot_id , packet1.state , packet1.active_id , packet1.active_crc32 , packet1.active_count , packet1.current_seq , packet1.staging , packet1.staged_id , packet1.staged_crc32 , packet1.staged_received , packet1.staged_count , packet1.swap_at_ms , packet1.station_session , packet1.rejected );
+    mavlink_msg_usv_mission_state_send(MAVLINK_COMM_1 , packet1.uptime_ms , packet1.boot_id , packet1.state , packet1.active_id , packet1.active_crc32 , packet1.active_count , packet1.current_seq , packet1.staging , packet1.staged_id , packet1.staged_crc32 , packet1.staged_received , packet1.staged_count , packet1.swap_at_ms , packet1.station_session , packet1.rejected , packet1.flags );
     mavlink_msg_usv_mission_state_decode(last_msg, &packet2);
         MAVLINK_ASSERT(memcmp(&packet1, &packet2, sizeof(packet1)) == 0);
 
