@@ -68,6 +68,24 @@ class SimStation:
 
         return await self.poll(up, timeout, "the boat link")
 
+    async def sail(self, mission_id: str, timeout: float) -> dict:
+        """Until the mission ends (completed, aborted, gone...): as the mate does, a boat that
+        went around and waits at its standby point is sent on a new approach (RESUME)."""
+        answered = 0
+
+        async def ended() -> dict | None:
+            nonlocal answered
+            boat = await self.get("/api/boat")
+            standby = sum(1 for s in boat["status"] if "at standby" in s["text"])
+            if boat["boat"] and boat["boat"]["state"] == "GO_AROUND" and standby > answered:
+                answered = standby
+                r = await self.client.post("/api/boat/command", json={"command": "resume"})
+                assert r.status_code == 200, r.text
+            m = await self.get(f"/api/missions/{mission_id}")
+            return m if m["state"] not in ("uploading", "verified", "active") else None
+
+        return await self.poll(ended, timeout, f"mission {mission_id} to end", every=0.5)
+
     async def fly(self, plan_id: str) -> dict:
         """Upload a done plan, wait until verified and START it; the mission."""
         r = await self.client.post("/api/missions", json={"plan_id": plan_id})

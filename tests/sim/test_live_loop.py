@@ -108,8 +108,7 @@ def test_turning_target_warns_proposes_a_replan_and_confirm_swaps_it(tmp_path) -
         # the new one runs to the ramp
         old = await sim.wait(f"/api/missions/{mission['id']}", "state", ("active",), 120)
         assert old["state"] == "gone"
-        final = await sim.wait(f"/api/missions/{swapped}", "state",
-                               ("uploading", "verified", "active"), 180)
+        final = await sim.sail(swapped, 300)
         assert final["state"] == "completed"
         rows = await sim.get("/api/telemetry", limit=100_000)
         clearance = min(math.hypot(r["x"] - PARK[0], r["y"] - PARK[1]) for r in rows) \
@@ -229,8 +228,7 @@ def test_under_way_the_boat_tracks_the_moving_ramp_and_a_confirmed_replan_recove
         swapped = confirm.json()["mission_id"]
         old = await sim.wait(f"/api/missions/{mission['id']}", "state", ("active",), 120)
         assert old["state"] == "gone"
-        final = await sim.wait(f"/api/missions/{swapped}", "state",
-                               ("uploading", "verified", "active"), 180)
+        final = await sim.sail(swapped, 300)
         assert final["state"] == "completed"
         rows = [r for r in await sim.get("/api/telemetry", limit=100_000)
                 if r["run"] is not None]

@@ -22,7 +22,7 @@ from usvstation.records import MissionRow, MissionView, RampOrigin
 class MissionStatus(enum.StrEnum):
     UPLOADING = "uploading"  # the upload runs
     VERIFIED = "verified"  # the boat holds it, READY for START
-    ACTIVE = "active"  # the boat runs it (RUNNING, HOLD or FAILSAFE)
+    ACTIVE = "active"  # the boat runs it (RUNNING, HOLD, FAILSAFE or GO_AROUND)
     COMPLETED = "completed"  # the boat reported DONE with it
     ABORTED = "aborted"  # the boat dropped it on ABORT
     FAILED = "failed"  # the upload failed and the boat does not hold it
@@ -33,7 +33,7 @@ class Seen(enum.Enum):
     """What one USV_MISSION_STATE says about one mission."""
 
     HELD_READY = "held, READY"
-    HELD_RUNNING = "held, RUNNING/HOLD/FAILSAFE"
+    HELD_RUNNING = "held, RUNNING/HOLD/FAILSAFE/GO_AROUND"
     HELD_DONE = "held, DONE"
     STAGED = "staged"
     DROPPED_BY_ABORT = "not held, boat ABORTED"
@@ -75,7 +75,7 @@ def seen(report: MissionState, wire_id: int, crc: int | None) -> Seen:
             return S.HELD_READY
         if report.state == "DONE":
             return S.HELD_DONE
-        if report.state in ("RUNNING", "HOLD", "FAILSAFE"):
+        if report.state in ("RUNNING", "HOLD", "FAILSAFE", "GO_AROUND"):
             return S.HELD_RUNNING
     if report.staged_id == wire_id and report.staged_crc32 == crc:
         return S.STAGED
