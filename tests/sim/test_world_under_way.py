@@ -53,3 +53,48 @@ def test_charted_obstacles_stay_put_over_ground_and_ais_ships_are_not_doubled(tm
         assert math.hypot(ais["rvx"], ais["rvy"]) < 0.1  # keeping pace with the ship
 
     run_station(tmp_path / "data", body, replan="off")
+
+
+def test_the_mother_ship_moves_and_turns_the_ramp_in_api_world(tmp_path):
+    """The simulated sea's ship under way (NMEA own-ship sentences) moves the ramp in
+    /api/world by speed x time along its course; when it turns, the stern ramp swings with
+    its heading at the ship's turn rate."""
+    import datetime as dt
+
+    import pytest
+
+    from usvstation.geo import RampFrame
+
+    base = load_scenario("case1").model_dump(mode="json")
+    doc = {**base, "mother_ship": {"speed": 1.5, "course_deg": 270.0, "turn_rate_deg_s": 2.0,
+                                   "lever_arm": {"forward": -30.0},
+                                   "manoeuvres": [{"t": 30.0, "course_deg": 250.0}]}}
+
+    async def body(sim: SimStation) -> None:
+        assert (await sim.client.put("/api/scenario", json=doc)).status_code == 200
+
+        async def under_way() -> dict | None:
+            w = await sim.get("/api/world")
+            return w if w["own_ship"] and w["own_ship"]["speed"] else None
+
+        w1 = await sim.poll(under_way, 30, "the own ship under way")
+        await sim.clock.sleep(10.0)
+        w2 = await sim.get("/api/world")
+        r1, r2 = w1["ramp"], w2["ramp"]
+        assert r1["source"] == "own_ship"
+        assert r2["ramp_bearing_deg"] == pytest.approx(90.0, abs=0.05)  # a stern ramp
+        assert r2["speed"] == pytest.approx(1.5, abs=0.01)  # (VTG: 0.01 kn)
+        assert r2["course_deg"] == pytest.approx(270.0, abs=0.1)
+        assert (r2["vx"], r2["vy"]) == pytest.approx((-1.5, 0.0), abs=0.01)
+        x, y = RampFrame(r1["lat"], r1["lon"], 90.0).to_ramp(r2["lat"], r2["lon"])
+        elapsed = (dt.datetime.fromisoformat(w2["time"]) -
+                   dt.datetime.fromisoformat(w1["time"])).total_seconds()
+        assert float(y) == pytest.approx(0.0, abs=0.5)
+        assert float(x) == pytest.approx(-1.5 * elapsed, abs=1.0)
+        assert w2["stats"]["bad"] == 0
+        await sim.clock.sleep(45.0 - sim.clock.now())  # the turn (t 30 s, 2 deg/s) is done
+        w3 = await sim.get("/api/world")
+        assert w3["own_ship"]["heading_deg"] == pytest.approx(250.0, abs=0.15)  # HDT 0.1
+        assert w3["ramp"]["ramp_bearing_deg"] == pytest.approx(70.0, abs=0.15)
+
+    run_station(tmp_path / "data", body)
