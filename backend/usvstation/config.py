@@ -11,7 +11,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Literal
 
-from pydantic import Field, field_validator
+from pydantic import Field, field_validator, model_validator
 from pydantic_settings import BaseSettings, SettingsConfigDict
 
 MIN_TOKEN_LENGTH = 16
@@ -109,12 +109,29 @@ class Settings(BaseSettings):
                                   json_schema_extra={"metavar": "PATH"})
     insecure_link: bool = Field(False, description="unsigned link (anyone with a radio can "
                                 "command the boat): explicit opt-in only")
+    boat_protocol: Literal["usv-link", "standard"] = Field(
+        "usv-link", description="the boat's protocol: usv-link (usv-link 2, timed waypoints, "
+        "signed) or standard (a stock MAVLink autopilot: standard missions, modes, GUIDED "
+        "position targets; --link socket://HOST:PORT, udp://HOST:PORT or udpin://HOST:PORT)")
+    vehicle_profile: Literal["ardupilot-rover", "px4"] = Field(
+        "ardupilot-rover", description="with --boat-protocol standard: the autopilot's "
+        "modes and mission conventions (docs/link.md)")
+    standard_guided: bool = Field(True, description="with --boat-protocol standard: START "
+                                  "follows the timed plan with GUIDED position targets (5 "
+                                  "Hz); off: the uploaded mission in AUTO at its leg speeds")
     frontend_dir: Path | None = Field(
         None, description="operator console files (index.html, app/, node_modules/); "
         "default: frontend/ of the source checkout")
     charts_dir: Path | None = Field(
         None, description="folder of offline chart packages (*.mbtiles) for the console's map",
         json_schema_extra={"flag": "--charts"})
+
+    @model_validator(mode="after")
+    def _standard_needs_a_vehicle(self) -> Settings:
+        if self.boat_protocol == "standard" and self.link == "sim":
+            raise ValueError("--boat-protocol standard needs --link to a vehicle (the "
+                             "simulated boat speaks usv-link 2)")
+        return self
 
     @field_validator("nmea")
     @classmethod

@@ -195,6 +195,15 @@ class Codec:
     def signed(self) -> bool:
         return self.key is not None
 
+    def require_signed(self, allow_unsigned: Sequence[int] = (mav.MAVLINK_MSG_ID_RADIO_STATUS,)
+                       ) -> None:
+        """From now on refuse unsigned frames but `allow_unsigned` (a standard vehicle
+        signs once SETUP_SIGNING reached it; its unsigned frames were taken until then)."""
+        allowed = frozenset(allow_unsigned)
+        self._allowed = allowed
+        self.mav.signing.allow_unsigned_callback = \
+            (lambda _mav, msg_id: msg_id in allowed) if allowed else None
+
     @property
     def timestamp(self) -> int:
         return self.mav.signing.timestamp
