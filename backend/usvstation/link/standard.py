@@ -56,9 +56,12 @@ from usvstation.link.protocol import (
 )
 from usvstation.link.standard_mission import (
     StandardItem,
+    f32,
     first_difference,
     leg_length_m,
+    leg_speeds,
     standard_items,
+    waypoints_of,
 )
 from usvstation.link.standard_transfer import (
     ITEM_TIMEOUT_S,
@@ -286,7 +289,7 @@ class Action:
     steps: list[tuple[int, tuple[float, ...], str]]  # (command, params, what it does)
     essential: set[int] = field(default_factory=set)  # indexes into steps
     index: int = 0
-    results: list[CommandDone] = field(default_factory=list)
+    results: dict[int, CommandDone] = field(default_factory=dict)  # by step, the last
 
 
 # ----------------------------------------------------------------------------- the protocol
@@ -739,6 +742,9 @@ class StandardProtocol:
                                                      f"mission {mission_id} to this vehicle")]
         diff = first_difference(self.upload_items_for(m), ev.items, self.profile.home_item)
         items = m.items if diff is None else _vehicle_copy(m, ev.items, self.profile.home_item)
+        if items is None:
+            return [ReadbackResult(mission_id, None, f"refused: the vehicle holds another "
+                                                     f"mission ({diff})")]
         return [ReadbackResult(mission_id, items, "" if diff is None else diff)]
 
     def _mission_for(self, mission_id: int) -> Mission | None:
@@ -822,7 +828,7 @@ class StandardProtocol:
             a = self.action
             if a is None or a.index >= len(a.steps) or a.steps[a.index][0] != d.command:
                 continue
-            a.results.append(d)
+            a.results[a.index] = d
             events += self._step_done(a, d, now)
         return events
 
@@ -866,8 +872,7 @@ class StandardProtocol:
 
     def _finish_action(self, a: Action, d: CommandDone, now: float) -> list[LinkEvent]:
         self.action = None
-        ok = all(r.accepted for i, r in enumerate(a.results) if i in a.essential) \
-            and len(a.results) >= max(a.essential, default=-1) + 1
+        ok = all(i in a.results and a.results[i].accepted for i in a.essential)
         if ok:
             self._apply_action(a, now)
         result = mav.MAV_RESULT_ACCEPTED if ok else d.result
@@ -973,15 +978,26 @@ class StandardProtocol:
 
 def _vehicle_copy(mission: Mission, held: tuple[StandardItem, ...],
                   home: bool) -> tuple[MissionItem, ...] | None:
-    """The vehicle's copy in usv-link items: its positions, the rest as uploaded (a standard
-    mission carries no time, course or heading); None when it holds another count."""
-    from usvstation.link.standard_mission import waypoints_of
-
+    """The vehicle's copy in usv-link items: its positions, and its leg speeds as the
+    waypoint times they give (a standard mission carries no time, course or heading: those
+    stay as uploaded); None when it holds another number of waypoints."""
     wps = waypoints_of(held, home)
     if len(wps) != mission.count:
         return None
-    return tuple(replace(it, lat=w.lat_e7, lon=w.lon_e7) for it, w in zip(mission.items, wps,
-                                                                        strict=True))
+    sent_speeds = leg_speeds(mission.items)
+    out: list[MissionItem] = []
+    for i, (it, w) in enumerate(zip(mission.items, wps, strict=True)):
+        t_ms = it.t_ms
+        if i > 0:
+            prev, speed = out[-1], wps[i - 1].leg_speed
+            if speed is None or f32(speed) != f32(sent_speeds[i - 1]):
+                length = leg_length_m(prev.lat, prev.lon, w.lat_e7, w.lon_e7)
+                dt_ms = round(1000 * length / speed) if speed else 0xFFFFFFFF
+                t_ms = min(0xFFFFFFFF, prev.t_ms + dt_ms)
+            else:
+                t_ms = prev.t_ms + (it.t_ms - mission.items[i - 1].t_ms)
+        out.append(replace(it, lat=w.lat_e7, lon=w.lon_e7, t_ms=t_ms))
+    return tuple(out)
 
 
 class _VehicleMonitor(LinkMonitor):
