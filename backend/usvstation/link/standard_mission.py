@@ -171,3 +171,36 @@ def _describe(it: StandardItem) -> str:
     if it.command == DO_CHANGE_SPEED:
         return f"DO_CHANGE_SPEED {it.param2:.3f} m/s"
     return f"command {it.command}"
+
+
+# ----------------------------------------------------------------------------- the boats' side
+
+ROVER_HOLD, ROVER_LOITER, ROVER_AUTO = 4, 5, 10  # ArduPilot Rover's numbers and names
+STATE_MODES = {0: ROVER_HOLD, 1: ROVER_LOITER, 2: ROVER_AUTO, 3: ROVER_LOITER,
+               4: ROVER_LOITER, 5: ROVER_HOLD, 6: ROVER_LOITER}
+"""A usv-link 2 boat's state (USV_BOAT_STATE) as the HEARTBEAT custom_mode a ground station
+names: a SURFACE_BOAT's custom modes are read with ArduPilot Rover's table (pymavlink,
+MAVProxy, Mission Planner), where HOLD stops the motors, LOITER keeps station and AUTO
+follows the mission. IDLE and ABORTED: HOLD; READY, HOLD, DONE and FAILSAFE (keeping
+station): LOITER; RUNNING: AUTO. The state itself is in USV_MISSION_STATE."""
+
+MISSION_STATES = {0: mav.MISSION_STATE_NO_MISSION, 1: mav.MISSION_STATE_NOT_STARTED,
+                  2: mav.MISSION_STATE_ACTIVE, 3: mav.MISSION_STATE_PAUSED,
+                  4: mav.MISSION_STATE_COMPLETE, 5: mav.MISSION_STATE_NO_MISSION,
+                  6: mav.MISSION_STATE_PAUSED}
+"""The boat state as MISSION_CURRENT.mission_state (IDLE and ABORTED hold no mission)."""
+
+
+def standard_mode(state: int) -> int:
+    """HEARTBEAT.custom_mode for a boat state (a state this table does not know: AUTO)."""
+    return STATE_MODES.get(state, ROVER_AUTO)
+
+
+def standard_armed(state: int) -> bool:
+    """HEARTBEAT's SAFETY_ARMED: the propellers drive a mission (RUNNING, HOLD, FAILSAFE)."""
+    return state in (2, 3, 6)
+
+
+def nav_seq(waypoint: int, home: bool = False) -> int:
+    """The mission item of waypoint `waypoint` (its NAV_WAYPOINT)."""
+    return 2 * waypoint + int(home)
