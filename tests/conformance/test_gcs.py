@@ -135,8 +135,8 @@ def test_keyed_gcs_downloads_the_mission_and_sees_the_recovery(boat):
             pos = gcs.latest("GLOBAL_POSITION_INT")
             assert abs(pos.lat * 1e-7 - lat[0]) < 0.001
             await rig.link.command("hold")
-            await rig.until(lambda: _mode(gcs) == "LOITER" and gcs.latest("MISSION_CURRENT").mission_state
-                            == common.MISSION_STATE_PAUSED, 5.0)
+            await rig.until(lambda: _mode(gcs) == "LOITER" and gcs.latest(
+                "MISSION_CURRENT").mission_state == common.MISSION_STATE_PAUSED, 5.0)
 
     asyncio.run(main())
 
