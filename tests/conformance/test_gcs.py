@@ -90,15 +90,18 @@ def _mode(gcs: Gcs) -> str | None:
 
 
 def _plan(rig: Rig, n: int = 12, speed: float = 0.9) -> tuple[list[dict], Mission]:
-    """A timed plan from the boat's position towards the ramp, with legs of various speeds."""
+    """A timed plan from the boat's position towards the ramp, its speed changing from
+    waypoint to waypoint, timed as the planners time theirs (paper 000 eq. 11)."""
     x0, y0 = rig.position()
     wps, t = [], 0.0
     for i in range(n):
         f = i / (n - 1)
         x, y = x0 * (1 - f), y0 * (1 - f) + 2.0 * math.sin(math.pi * f)
+        v = speed * (1 + 0.2 * (i % 3))
         if wps:
-            t += math.hypot(x - wps[-1]["x"], y - wps[-1]["y"]) / (speed * (1 + 0.2 * (i % 3)))
-        wps.append({"x": x, "y": y, "t": t, "speed": speed, "heading_deg": 180.0})
+            a = wps[-1]
+            t += 2 * math.hypot(x - a["x"], y - a["y"]) / (a["speed"] + v)
+        wps.append({"x": x, "y": y, "t": t, "speed": v, "heading_deg": 180.0})
     return wps, mission_from_plan(wps, FRAME, 4242)
 
 

@@ -3,8 +3,8 @@
 What any ground station and any stock autopilot understand (docs/link.md "Standard
 MAVLink"): one MAV_CMD_NAV_WAYPOINT per waypoint (MAV_FRAME_GLOBAL_RELATIVE_ALT, lat/lon in
 1e-7 degrees, altitude 0), each but the last followed by a MAV_CMD_DO_CHANGE_SPEED whose
-param2 is the leg's planned speed over ground: the leg's length over its duration, the
-speed at which position is linear in time along it (paper 000 eq. 9). So 2n - 1 items for
+param2 is the leg's planned speed over ground: its length over its duration, the mean of
+its end speeds in plans that follow paper 000's eq. 11 (`leg_speed`). So 2n - 1 items for
 n waypoints. The timing itself (t_ms), the course and the hull heading have no place in a
 standard mission: a usv-link 2 boat keeps them in the dialect, a stock autopilot sails
 the legs at their speeds (AUTO) or follows the station's timed position targets (GUIDED).
@@ -59,13 +59,25 @@ def leg_length_m(lat1_e7: int, lon1_e7: int, lat2_e7: int, lon2_e7: int) -> floa
     return math.hypot(dn, de)
 
 
+def leg_speed(a: Any, b: Any) -> float:
+    """The planned speed (m/s) of the leg from item a to item b (lat, lon, t_ms, speed_cms):
+    its length over its duration. A plan that follows paper 000's eq. 11 (dT = 2 L /
+    (v_a + v_b), every planner here does) gives the same as the mean of its end speeds,
+    which the wire carries to 1 cm/s where the 1e-7 degree positions make the length
+    over a short leg less exact: then that mean; otherwise length / duration."""
+    dt = (b.t_ms - a.t_ms) / 1000.0
+    if dt <= 0:
+        return 0.0
+    geometric = leg_length_m(a.lat, a.lon, b.lat, b.lon) / dt
+    mean = (a.speed_cms + b.speed_cms) / 200.0
+    # the wire's rounding: 1e-7 deg at each end (about 1.6 cm together), 1 ms, 1 cm/s
+    tolerance = 0.01 + (0.02 + 0.001 * geometric) / dt
+    return mean if abs(mean - geometric) <= tolerance else geometric
+
+
 def leg_speeds(items: Sequence[Any]) -> list[float]:
-    """Planned speed (m/s) of each leg of timed items (lat, lon, t_ms): length / duration."""
-    out = []
-    for a, b in itertools.pairwise(items):
-        dt = (b.t_ms - a.t_ms) / 1000.0
-        out.append(leg_length_m(a.lat, a.lon, b.lat, b.lon) / dt if dt > 0 else 0.0)
-    return out
+    """Planned speed of each leg of timed items (`leg_speed`)."""
+    return [leg_speed(a, b) for a, b in itertools.pairwise(items)]
 
 
 @dataclass(frozen=True)

@@ -1048,6 +1048,23 @@ static float std_leg_m(int32_t lat1, int32_t lon1, int32_t lat2, int32_t lon2)
     return sqrtf(dn * dn + de * de);
 }
 
+/* The leg's planned speed (as link/standard_mission.py leg_speed): length / duration,
+ * or the mean of its end speeds where the plan follows eq. 11 (dT = 2 L / (v_a + v_b))
+ * within the wire's rounding (1e-7 deg positions, 1 ms, 1 cm/s). */
+static float std_leg_speed(const usv_mission_t *m, uint16_t w)
+{
+    uint32_t dt = m->t_ms[w + 1u] - m->t_ms[w];
+    float dt_s, geometric, mean;
+    if (dt == 0u) {
+        return 0.0f;
+    }
+    dt_s = (float)dt * 1e-3f;
+    geometric = std_leg_m(m->lat[w], m->lon[w], m->lat[w + 1u], m->lon[w + 1u]) / dt_s;
+    mean = (float)(m->speed_cms[w] + m->speed_cms[w + 1u]) * 0.005f;
+    return fabsf(mean - geometric) <= 0.01f + (0.02f + 0.001f * geometric) / dt_s ? mean
+                                                                                 : geometric;
+}
+
 static int std_is_read(uint32_t msgid)
 {
     return msgid == MAVLINK_MSG_ID_MISSION_REQUEST_LIST ||
@@ -1140,12 +1157,10 @@ static void std_on_read(usv_boat_t *b, const mavlink_message_t *msg)
             it.x = m->lat[w];
             it.y = m->lon[w];
         } else {
-            uint32_t dt = m->t_ms[w + 1u] - m->t_ms[w];
             it.frame = MAV_FRAME_MISSION;
             it.command = MAV_CMD_DO_CHANGE_SPEED;
             it.param1 = 1.0f; /* ground speed */
-            it.param2 = dt > 0u ? std_leg_m(m->lat[w], m->lon[w], m->lat[w + 1u],
-                                            m->lon[w + 1u]) * 1000.0f / (float)dt : 0.0f;
+            it.param2 = std_leg_speed(m, w);
             it.param3 = -1.0f; /* throttle unchanged */
         }
         if (msg->msgid == MAVLINK_MSG_ID_MISSION_REQUEST_INT) {
