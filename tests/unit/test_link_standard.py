@@ -329,3 +329,13 @@ def test_reports_come_with_every_heartbeat() -> None:
     reports = h.of(BoatReport)
     assert 4 <= len(reports) <= 6 and reports[-1].report.state == "IDLE"
     assert UNIX0 > 0
+
+
+def test_bench_standard_upload_is_whole_and_near_the_line_rate() -> None:
+    """`bench link`'s standard_upload row (simulated time: the same on any machine)."""
+    from usvstation.bench.link import standard_upload_run
+
+    row = standard_upload_run(57600)
+    assert row["completed"] and row["identical"] and row["retransmissions"] == 0
+    assert row["bound_s"] <= row["time_s"] < 1.5 * row["bound_s"]
+    assert row["verified_s"] > row["time_s"]  # the read-back follows the upload
