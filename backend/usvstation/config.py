@@ -53,7 +53,8 @@ class Settings(BaseSettings):
     host: str = Field("127.0.0.1", description="address to bind")
     port: int = Field(8000, ge=0, le=65535, description="HTTP port (0: any free port)")
     link: str = Field("sim", description="the boat link: 'sim' (the simulated boat on a "
-                      "pseudo-terminal), a serial device or a pyserial URL (socket://host:port)")
+                      "pseudo-terminal), a serial device, a pyserial URL (socket://host:port: "
+                      "TCP) or UDP (udp://host:port to the boat, udpin://host:port to listen)")
     baud: int = Field(57600, gt=0, description="serial baud rate")
     data_dir: Path = Field(Path("data"), description="database, token and key folder")
     token: str | None = Field(None, description="operator access token; default: generated "

@@ -339,3 +339,15 @@ def test_bench_standard_upload_is_whole_and_near_the_line_rate() -> None:
     assert row["completed"] and row["identical"] and row["retransmissions"] == 0
     assert row["bound_s"] <= row["time_s"] < 1.5 * row["bound_s"]
     assert row["verified_s"] > row["time_s"]  # the read-back follows the upload
+
+
+def test_a_vehicle_signing_with_another_key_is_refused() -> None:
+    h = StandardHarness(key=KEY)
+    other = bytes(range(100, 132))
+    h.vehicle.key = other
+    h.vehicle.codec = wire.Codec(1, mav.MAV_COMP_ID_AUTOPILOT1, other,
+                                 timestamp=wire.signing_time(UNIX0))
+    h.until(lambda: False, 3)
+    assert not h.station.link_up and h.station.refused["bad signature"] >= 3
+    with pytest.raises(RuntimeError, match="link is down"):
+        h.station.send_command("abort", h.t)
