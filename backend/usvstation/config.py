@@ -128,10 +128,15 @@ class Settings(BaseSettings):
         json_schema_extra={"flag": "--charts"})
 
     @model_validator(mode="after")
-    def _standard_needs_a_vehicle(self) -> Settings:
+    def _link_url(self) -> Settings:
         if self.boat_protocol == "standard" and self.link == "sim":
             raise ValueError("--boat-protocol standard needs --link to a vehicle (the "
                              "simulated boat speaks usv-link 2)")
+        scheme, sep, rest = self.link.partition("://")
+        if sep and scheme in ("udp", "udpin"):
+            host, _, port = rest.rpartition(":")
+            if not host or not port.isdigit() or not 0 < int(port) < 65536:
+                raise ValueError(f"--link {self.link}: expected {scheme}://HOST:PORT")
         return self
 
     @field_validator("nmea")
