@@ -27,9 +27,19 @@ class StandardHarness:
         self.station = StandardProtocol(StandardConfig(profile=p, guided=guided, baud=baud),
                                         0.0, key=key, unix_time=UNIX0, session=7)
         self.events: list = []
+        self.drop_down: Any = None  # predicate on a vehicle frame (decoded): drop it
 
-    def _carry(self, data: bytes) -> bytes:
-        return b"".join(f for f in wire.split_frames(data) if self.rng.random() >= self.loss)
+    def _carry(self, data: bytes, down: bool = False) -> bytes:
+        kept = []
+        for f in wire.split_frames(data):
+            if self.rng.random() < self.loss:
+                continue
+            if down and self.drop_down is not None:
+                msgs, _ = wire.Codec(99, 1, None).feed(f)
+                if msgs and self.drop_down(msgs[0]):
+                    continue
+            kept.append(f)
+        return b"".join(kept)
 
     def step(self, dt: float = 0.01) -> None:
         self.t += dt
@@ -38,7 +48,7 @@ class StandardHarness:
         up = self._carry(self.station.data_to_send())
         if up:
             self.vehicle.receive(up, self.t)
-        down = self._carry(self.vehicle.data_to_send())
+        down = self._carry(self.vehicle.data_to_send(), down=True)
         if down:
             self.events += self.station.receive_data(down, self.t)
 

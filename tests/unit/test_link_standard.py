@@ -351,3 +351,14 @@ def test_a_vehicle_signing_with_another_key_is_refused() -> None:
     assert not h.station.link_up and h.station.refused["bad signature"] >= 3
     with pytest.raises(RuntimeError, match="link is down"):
         h.station.send_command("abort", h.t)
+
+
+def test_a_lost_final_ack_is_settled_by_the_read_back() -> None:
+    h = StandardHarness()
+    h.drop_down = lambda m: m.get_type() == "MISSION_ACK"  # the vehicle's ACK never arrives
+    m = make_mission(7, 6)
+    result = _upload(h, m)
+    assert result.ok and "the vehicle's" not in result.reason
+    assert result.reason.startswith("uploaded and read back identical (the upload itself")
+    assert "no answer to item 11 after 6 sends" in result.reason  # 12 items: home + 11
+    assert h.station.report.active_id == 7 and h.vehicle.uploads == 1

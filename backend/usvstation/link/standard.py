@@ -732,8 +732,10 @@ class StandardProtocol:
             self.tracker.mission = m
             self.tracker.waypoint_index = 0
             self.tracker.apply("verified")
+            note = f" (the upload itself ended: {self._upload_note})" if self._upload_note \
+                else ""
             return [UploadProgress(m.mission_id, m.count, m.count, sent=m.count),
-                    self._upload_result(True, "uploaded and read back identical", now),
+                    self._upload_result(True, "uploaded and read back identical" + note, now),
                     *self._report(now)]
         if not ev.ok or ev.items is None:
             return [ReadbackResult(mission_id, None, ev.reason)]
