@@ -11,7 +11,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Literal
 
-from pydantic import Field, field_validator
+from pydantic import Field, field_validator, model_validator
 from pydantic_settings import BaseSettings, SettingsConfigDict
 
 MIN_TOKEN_LENGTH = 16
@@ -53,7 +53,8 @@ class Settings(BaseSettings):
     host: str = Field("127.0.0.1", description="address to bind")
     port: int = Field(8000, ge=0, le=65535, description="HTTP port (0: any free port)")
     link: str = Field("sim", description="the boat link: 'sim' (the simulated boat on a "
-                      "pseudo-terminal), a serial device or a pyserial URL (socket://host:port)")
+                      "pseudo-terminal), a serial device, a pyserial URL (socket://host:port: "
+                      "TCP) or UDP (udp://host:port to the boat, udpin://host:port to listen)")
     baud: int = Field(57600, gt=0, description="serial baud rate")
     data_dir: Path = Field(Path("data"), description="database, token and key folder")
     token: str | None = Field(None, description="operator access token; default: generated "
@@ -109,12 +110,34 @@ class Settings(BaseSettings):
                                   json_schema_extra={"metavar": "PATH"})
     insecure_link: bool = Field(False, description="unsigned link (anyone with a radio can "
                                 "command the boat): explicit opt-in only")
+    boat_protocol: Literal["usv-link", "standard"] = Field(
+        "usv-link", description="the boat's protocol: usv-link (usv-link 2, timed waypoints, "
+        "signed) or standard (a stock MAVLink autopilot: standard missions, modes, GUIDED "
+        "position targets; --link socket://HOST:PORT, udp://HOST:PORT or udpin://HOST:PORT)")
+    vehicle_profile: Literal["ardupilot-rover", "px4"] = Field(
+        "ardupilot-rover", description="with --boat-protocol standard: the autopilot's "
+        "modes and mission conventions (docs/link.md)")
+    standard_guided: bool = Field(True, description="with --boat-protocol standard: START "
+                                  "follows the timed plan with GUIDED position targets (5 "
+                                  "Hz); off: the uploaded mission in AUTO at its leg speeds")
     frontend_dir: Path | None = Field(
         None, description="operator console files (index.html, app/, node_modules/); "
         "default: frontend/ of the source checkout")
     charts_dir: Path | None = Field(
         None, description="folder of offline chart packages (*.mbtiles) for the console's map",
         json_schema_extra={"flag": "--charts"})
+
+    @model_validator(mode="after")
+    def _link_url(self) -> Settings:
+        if self.boat_protocol == "standard" and self.link == "sim":
+            raise ValueError("--boat-protocol standard needs --link to a vehicle (the "
+                             "simulated boat speaks usv-link 2)")
+        scheme, sep, rest = self.link.partition("://")
+        if sep and scheme in ("udp", "udpin"):
+            host, _, port = rest.rpartition(":")
+            if not host or not port.isdigit() or not 0 < int(port) < 65536:
+                raise ValueError(f"--link {self.link}: expected {scheme}://HOST:PORT")
+        return self
 
     @field_validator("nmea")
     @classmethod

@@ -194,6 +194,10 @@ class LinkStatus(TypedDict):
     frames_lost: NotRequired[int]
     rtt_s: NotRequired[float | None]
     error: NotRequired[str | None]
+    protocol: NotRequired[str]  # "standard": a stock autopilot (usv-link 2 otherwise)
+    profile: NotRequired[str]
+    vehicle_mode: NotRequired[str | None]
+    armed: NotRequired[bool]
 
 
 class BoatState(TypedDict):

@@ -20,6 +20,7 @@ from usvstation.services.hub import LiveHub
 from usvstation.services.monitor import MonitorService
 from usvstation.services.plans import PlanService
 from usvstation.services.simboat import EmbeddedSim, InProcessSim
+from usvstation.services.standard_boat import StandardBoatService
 from usvstation.services.world import WorldService
 from usvstation.sim.vehicle import Vehicle
 from usvstation.store.alerts import AlertStore
@@ -104,8 +105,10 @@ class Station:
         self.lag = LoopLagMonitor(clock)
         self._watch: asyncio.Task | None = None
         self.started = self.stopped = False
-        self.boat = BoatService(settings, self.store, self.hub, self.plans, clock=clock,
-                                entropy=self.entropy)
+        boat_service = StandardBoatService if settings.boat_protocol == "standard" \
+            else BoatService
+        self.boat = boat_service(settings, self.store, self.hub, self.plans, clock=clock,
+                                 entropy=self.entropy)
         self.sim: EmbeddedSim | InProcessSim | None = None
         self.hub.observers.append(ThreeDFeed(self.view, self._plan_of_mission).on_event)
         self.world = WorldService(self.hub, settings.nmea, simulate=settings.link == "sim",

@@ -19,13 +19,19 @@ function boatText(b) {
   return b.mission_id ? `${b.state} (mission ${b.mission_id})` : b.state;
 }
 
+/** The link pill from a link status (GET /api/boat `link`, every heartbeat's `link`): an
+ *  unsigned link says so plainly for as long as it lasts ("unsigned link: ..."). */
+function showLinkState(link) {
+  setPill($('link-state'), link.up ? `link up${link.simulated ? ' (simulated boat)' : ''}`
+    : `link down${link.error ? `: ${link.error}` : ''}`, link.up ? 'ok' : 'bad');
+  if (link.warning) setPill($('link-state'), `${$('link-state').textContent}: ${link.warning}`, 'bad');
+}
+
 async function pollBoat() {
   try {
     const boat = await api.get('/api/boat');
     const link = boat.link;
-    setPill($('link-state'), link.up ? `link up${link.simulated ? ' (simulated boat)' : ''}`
-      : `link down${link.error ? `: ${link.error}` : ''}`, link.up ? 'ok' : 'bad');
-    if (link.warning) setPill($('link-state'), `${$('link-state').textContent}: ${link.warning}`, 'bad');
+    showLinkState(link);
     const now = performance.now();
     if (link.heartbeat_age_s != null) ages.hb = now - link.heartbeat_age_s * 1000;
     if (link.telemetry_age_s != null) ages.tm = now - link.telemetry_age_s * 1000;
@@ -133,7 +139,10 @@ function handleLive(type, data) {
     case 'heartbeat':
       ages.hb = performance.now();
       $('boat-state').textContent = boatText(data);
-      if (data.link) showCounters(data.link);
+      if (data.link) {
+        showLinkState(data.link);
+        showCounters(data.link);
+      }
       break;
     case 'status':
       addMessage(data);

@@ -101,7 +101,7 @@ def test_telemetry_signed_and_complete(exe, d, key_path):
         hb = c.of_type("HEARTBEAT")[0]
     assert {"HEARTBEAT", "GLOBAL_POSITION_INT", "ATTITUDE", "VFR_HUD", "GPS_RAW_INT",
             "SYS_STATUS", "USV_THRUST", "USV_MISSION_STATE"} <= kinds
-    assert hb.type == d.MAV_TYPE_SURFACE_BOAT and hb.custom_mode == IDLE
+    assert hb.type == d.MAV_TYPE_SURFACE_BOAT and hb.custom_mode == 4  # IDLE: Rover HOLD
     assert hb.get_srcSystem() == BOAT_ID
     assert all(m.get_signed() for m in c.msgs)  # every boat frame carries a signature
     # USV_MISSION_STATE follows every HEARTBEAT

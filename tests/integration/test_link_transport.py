@@ -83,3 +83,32 @@ def test_fault_injector_drops_whole_frames_and_corrupted_ones_never_decode():
         pair.close()
 
     asyncio.run(main())
+
+
+def test_udp_frames_cross_one_per_datagram_and_udpin_answers_its_peer():
+    """udpin://HOST:PORT listens and answers whoever spoke last; udp://HOST:PORT sends to
+    it from an ephemeral port; a write of several frames is one datagram per frame."""
+    import socket
+
+    from usvstation.link.transport import open_stream
+
+    async def main():
+        with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+            s.bind(("127.0.0.1", 0))
+            port = s.getsockname()[1]
+        server = await open_stream(f"udpin://127.0.0.1:{port}")
+        client = await open_stream(f"udp://127.0.0.1:{port}")
+        try:
+            await server.write(b"lost")  # nobody has spoken yet: dropped, no error
+            frames = _heartbeats(3)[0]
+            await client.write(b"".join(frames))
+            got = [await asyncio.wait_for(server.read(), 5.0) for _ in frames]
+            assert got == frames  # one datagram each
+            await server.write(frames[0])
+            assert await asyncio.wait_for(client.read(), 5.0) == frames[0]
+        finally:
+            await client.close()
+            await server.close()
+        assert await server.read() == b""
+
+    asyncio.run(main())

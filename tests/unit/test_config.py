@@ -39,3 +39,20 @@ def test_environment_variables(tmp_path, monkeypatch):
     monkeypatch.setenv("USV_STATION_SIM_SPEED", "5")
     s = Settings(data_dir=tmp_path)
     assert s.port == 9001 and s.sim_speed == 5.0
+
+
+def test_standard_boat_protocol_needs_a_vehicle_link_and_udp_urls_a_port():
+    import pytest
+    from pydantic import ValidationError
+
+    from usvstation.config import Settings
+
+    with pytest.raises(ValidationError, match="needs --link to a vehicle"):
+        Settings(boat_protocol="standard")
+    with pytest.raises(ValidationError, match="expected udp://HOST:PORT"):
+        Settings(link="udp://127.0.0.1")
+    with pytest.raises(ValidationError, match="expected udpin://HOST:PORT"):
+        Settings(link="udpin://0.0.0.0:99999")
+    s = Settings(boat_protocol="standard", link="udpin://0.0.0.0:14550",
+                 vehicle_profile="px4")
+    assert (s.boat_protocol, s.vehicle_profile, s.standard_guided) == ("standard", "px4", True)

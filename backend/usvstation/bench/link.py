@@ -12,6 +12,14 @@
   long mission for 10 minutes of simulated time with `loss` of the station-to-boat
   frames; counts the boat's failsafes (any is spurious: the station never fell silent).
 - decode: GLOBAL_POSITION_INT frames (signed) per second through the Python codec.
+- standard_upload: the same 32 waypoints to a stock autopilot through the standard mission
+  protocol (link/standard.py against sim/standard_vehicle.py), in simulated time on a
+  modelled serial line (each direction paced at the baud, frames whole or lost, the
+  vehicle's 1 Hz heartbeat and 5 Hz position sharing it). `time_s`: MISSION_COUNT to the
+  vehicle's ACK; `verified_s`: to the end of the read-back the station does before it calls
+  a mission verified; `bound_s`: the upload's own frames both ways x 10 / baud (the
+  protocol is stop-and-wait: one item per round trip); `usv_link_time_s`: usv-link 2's
+  windowed signed upload in the same line model.
 """
 
 from __future__ import annotations
@@ -207,6 +215,145 @@ async def _uploads(quick: bool, progress: Callable[[str], None]) -> list[dict[st
     return runs
 
 
+class _SimLine:
+    """A full-duplex serial line in simulated time: each direction sends whole frames one
+    after another at the baud (10 bits a byte); a frame arrives when its last byte has,
+    or (probability `loss`, seeded) never."""
+
+    def __init__(self, baud: int, loss: float = 0.0, seed: int = 1) -> None:
+        self.baud, self.loss, self.rng = baud, loss, random.Random(seed)
+        self.free = [0.0, 0.0]
+        self.queues: list[list[tuple[float, bytes]]] = [[], []]
+
+    def send(self, direction: int, data: bytes, now: float) -> None:
+        for frame in wire.split_frames(data):
+            start = max(now, self.free[direction])
+            self.free[direction] = start + len(frame) * 10 / self.baud
+            if self.rng.random() >= self.loss:
+                self.queues[direction].append((self.free[direction], frame))
+
+    def receive(self, direction: int, now: float) -> bytes:
+        q = self.queues[direction]
+        n = 0
+        while n < len(q) and q[n][0] <= now:
+            n += 1
+        out = b"".join(f for _, f in q[:n])
+        del q[:n]
+        return out
+
+
+def standard_upload_bytes(mission: Mission, signed: bool) -> tuple[int, int]:
+    """Bytes of a loss-free standard upload's own frames: (station to vehicle, back)."""
+    from usvstation.link.standard_mission import standard_items
+
+    key = KEY if signed else None
+    st = wire.Codec(wire.STATION_ID, wire.STATION_COMPONENT, key)
+    vh = wire.Codec(1, 1, key)
+    items = standard_items(mission.items)
+    up = len(st.encode(st.mav.mission_count_encode(1, 1, len(items), 0)))
+    up += sum(len(st.encode(st.mav.mission_item_int_encode(
+        1, 1, i.seq, i.frame, i.command, 0, 1, i.param1, i.param2, i.param3, i.param4, i.x,
+        i.y, i.z, 0))) for i in items)
+    down = sum(len(vh.encode(vh.mav.mission_request_int_encode(255, 190, i.seq, 0)))
+               for i in items)
+    down += len(vh.encode(vh.mav.mission_ack_encode(255, 190, 0, 0)))
+    return up, down
+
+
+def standard_upload_run(baud: int, signed: bool = False, loss: float = 0.0, seed: int = 1,
+                        dt: float = 0.001) -> dict[str, Any]:
+    """One 32-waypoint standard upload and read-back in simulated time (module doc)."""
+    from usvstation.link.standard import PROFILES, StandardConfig, StandardProtocol
+    from usvstation.link.standard_mission import standard_items
+    from usvstation.sim.standard_vehicle import StandardVehicle
+
+    mission = bench_mission()
+    key = KEY if signed else None
+    profile = PROFILES["px4"]  # no home item: the same 63 items as a boat serves
+    vehicle = StandardVehicle(profile, key=key)
+    if key is not None:
+        vehicle.codec = wire.Codec(1, 1, key, timestamp=wire.signing_time(vehicle.unix0))
+    station = StandardProtocol(StandardConfig(profile=profile, baud=baud), 0.0, key=key,
+                               unix_time=vehicle.unix0, session=1)
+    line = _SimLine(baud, loss, seed)
+    t, started, uploaded_at, result = 0.0, None, None, None
+    while t < 600.0 and result is None:
+        t += dt
+        vehicle.poll(t)
+        line.send(1, vehicle.data_to_send(), t)
+        up = line.receive(0, t)
+        if up:
+            vehicle.receive(up, t)
+            line.send(1, vehicle.data_to_send(), t)
+        down = line.receive(1, t)
+        events = station.receive_data(down, t) if down else station.poll(t)
+        line.send(0, station.data_to_send(), t)
+        if started is None and station.link_up:
+            started = t
+            station.start_upload(mission, t)
+            line.send(0, station.data_to_send(), t)
+        if uploaded_at is None and station.upload is not None and station.upload.done:
+            uploaded_at = t
+        result = next((e for e in events if isinstance(e, UploadResult)), None)
+    up_b, down_b = standard_upload_bytes(mission, signed)
+    bound = (up_b + down_b) * 10 / baud
+    assert started is not None and result is not None and uploaded_at is not None
+    return {"baud": baud, "signed": signed, "loss": loss, "seed": seed,
+            "time_s": round(uploaded_at - started, 4),
+            "verified_s": round(t - started, 4), "bound_s": round(bound, 4),
+            "ratio": round((uploaded_at - started) / bound, 3),
+            "completed": result.ok, "reason": result.reason,
+            "identical": vehicle.mission == list(standard_items(mission.items)),
+            "retransmissions": result.retransmissions}
+
+
+def usv_link_upload_sim(baud: int, dt: float = 0.001) -> float:
+    """usv-link 2's signed 32-waypoint upload, in the same simulated line model."""
+    mission = bench_mission()
+    boat = BoatProtocol(KinematicVehicle(85.0, 10.0, 3.14159), FRAME, BoatConfig(baud=baud),
+                        key=KEY, gps=GpsNoise(seed=1), now=0.0, unix_time=1.7e9)
+    station = StationProtocol(LinkConfig(baud=baud), 0.0, key=KEY, unix_time=1.7e9,
+                              session=5)
+    line = _SimLine(baud)
+    t, started = 0.0, None
+    while t < 600.0:
+        t += dt
+        boat.update(t)
+        up = line.receive(0, t)
+        if up:
+            boat.receive_data(up, t)
+        line.send(1, boat.data_to_send(t), t)
+        down = line.receive(1, t)
+        events = station.receive_data(down, t) if down else station.poll(t)
+        line.send(0, station.data_to_send(), t)
+        if started is None and station.link_up:
+            started = t
+            station.start_upload(mission, t)
+            line.send(0, station.data_to_send(), t)
+        if any(isinstance(e, UploadResult) for e in events):
+            assert started is not None
+            return round(t - started, 4)
+    raise RuntimeError("usv-link upload did not end")
+
+
+def _standard_uploads(quick: bool, progress: Callable[[str], None]) -> list[dict[str, Any]]:
+    up, down = upload_wire_bytes(bench_mission())
+    rows = []
+    for baud in (57600, 9600):
+        usv_link = usv_link_upload_sim(baud)
+        for signed in (False, True):
+            for loss, seeds in ((0.0, [1]), (0.1, [1] if quick else [1, 2, 3])):
+                for seed in seeds:
+                    r = standard_upload_run(baud, signed, loss, seed)
+                    r["usv_link_time_s"] = usv_link
+                    r["usv_link_bound_s"] = round((up + down) * 10 / baud, 4)
+                    rows.append(r)
+                    progress(f"standard upload {baud} baud, signed {signed}, loss {loss}: "
+                             f"{r['time_s']} s (bound {r['bound_s']} s, verified "
+                             f"{r['verified_s']} s; usv-link 2 {usv_link} s)")
+    return rows
+
+
 def run_link_bench(quick: bool = False,
                    progress: Callable[[str], None] = lambda _: None) -> dict[str, Any]:
     up, down = upload_wire_bytes(bench_mission())
@@ -214,6 +361,7 @@ def run_link_bench(quick: bool = False,
     minutes = 1.0 if quick else 10.0
     failsafe = [spurious_failsafes(loss, minutes) for loss in (0.2,)]
     progress(f"failsafe: {failsafe}")
+    standard = _standard_uploads(quick, progress)
     decode_cpu, decode_wall = decode_rate(30_000 if quick else 100_000)
     progress(f"decode: {decode_cpu:.0f} frames per CPU second, {decode_wall:.0f} per wall s")
 
@@ -233,4 +381,5 @@ def run_link_bench(quick: bool = False,
         "failsafe": failsafe,
         "decode_frames_per_cpu_s": round(decode_cpu),
         "decode_frames_per_wall_s": round(decode_wall),
+        "standard_upload": standard,
     }

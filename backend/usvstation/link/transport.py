@@ -1,4 +1,5 @@
-"""Byte transports for usv-link: serial ports and pyserial URLs (pyserial-asyncio), a
+"""Byte transports for usv-link: serial ports and pyserial URLs (pyserial-asyncio), UDP
+(`udp://HOST:PORT` to a vehicle, `udpin://HOST:PORT` to listen for one), a
 pseudo-terminal pair, an in-memory pipe (simulated time) and a fault-injecting,
 line-rate-pacing wrapper.
 
@@ -261,6 +262,78 @@ class FaultInjectingStream:
         await self.inner.close()
 
 
+class UdpStream:
+    """MAVLink over UDP, one datagram per write. `udp://HOST:PORT`: send to the vehicle at
+    HOST:PORT from an ephemeral port (MAVSDK's `udpin://`, a companion's router);
+    `udpin://HOST:PORT`: listen there and answer whoever sent last (ArduPilot SITL's and
+    most autopilots' `udpout` to a ground station, port 14550 by convention)."""
+
+    def __init__(self) -> None:
+        self._rx: asyncio.Queue[bytes] = asyncio.Queue()
+        self._transport: asyncio.DatagramTransport | None = None
+        self.peer: tuple[str, int] | None = None
+        self.closed = False
+
+    @classmethod
+    async def open(cls, url: str) -> UdpStream:
+        scheme, _, rest = url.partition("://")
+        host, _, port = rest.rpartition(":")
+        if scheme not in ("udp", "udpin") or not host or not port.isdigit():
+            raise ValueError(f"{url!r}: expected udp://HOST:PORT or udpin://HOST:PORT")
+        self = cls()
+        loop = asyncio.get_running_loop()
+        protocol = _Datagrams(self)
+        if scheme == "udp":
+            self.peer = (host, int(port))
+            transport, _ = await loop.create_datagram_endpoint(lambda: protocol,
+                                                               remote_addr=self.peer)
+        else:
+            transport, _ = await loop.create_datagram_endpoint(lambda: protocol,
+                                                               local_addr=(host, int(port)))
+        self._transport = transport
+        return self
+
+    async def read(self) -> bytes:
+        if self.closed:
+            return b""
+        return await self._rx.get()
+
+    async def write(self, data: bytes) -> None:
+        if self.closed or self._transport is None:
+            raise ConnectionError("closed")
+        if self.peer is None:
+            return  # listening, and nobody has spoken yet
+        for frame in split_frames(data):  # one frame a datagram, as MAVLink routers send
+            if self._transport.get_extra_info("peername") is not None:
+                self._transport.sendto(frame)
+            else:
+                self._transport.sendto(frame, self.peer)
+
+    async def close(self) -> None:
+        if not self.closed:
+            self.closed = True
+            if self._transport is not None:
+                self._transport.close()
+            self._rx.put_nowait(b"")
+
+
+class _Datagrams(asyncio.DatagramProtocol):
+    def __init__(self, stream: UdpStream) -> None:
+        self.stream = stream
+
+    def datagram_received(self, data: bytes, addr: tuple[str, int]) -> None:
+        if data:
+            self.stream.peer = self.stream.peer if self.stream._transport is not None and \
+                self.stream._transport.get_extra_info("peername") is not None else addr
+            self.stream._rx.put_nowait(data)
+
+    def error_received(self, exc: Exception) -> None:
+        pass  # ICMP port unreachable while the vehicle is not up yet: it comes back
+
+
 async def open_stream(url: str, baud: int = 57600) -> ByteStream:
-    """Open a serial device or pyserial URL as a ByteStream."""
+    """Open a serial device, a pyserial URL (socket://host:port: TCP) or a UDP URL
+    (udp://HOST:PORT, udpin://HOST:PORT) as a ByteStream."""
+    if url.startswith(("udp://", "udpin://")):
+        return await UdpStream.open(url)
     return await SerialStream.open(url, baud)

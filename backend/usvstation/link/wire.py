@@ -131,6 +131,7 @@ class _CheckedMAVLink(mav.MAVLink):
         super().__init__(*args, **kwargs)
         self.stream_floor = 0
         self.last_refusal = ""
+        self.bad_signature = False  # the frame being decoded carried a failing signature
 
     def check_signature(self, msgbuf: bytearray, srcSystem: int, srcComponent: int) -> bool:
         key = self.signing.secret_key
@@ -139,15 +140,18 @@ class _CheckedMAVLink(mav.MAVLink):
         timestamp = tlow + (thigh << 32)
         if hashlib.sha256(key + bytes(msgbuf[:-6])).digest()[:6] != bytes(msgbuf[-6:]):
             self.last_refusal = "bad signature"
+            self.bad_signature = True
             return False
         stream = (msgbuf[-13], srcSystem, srcComponent)
         last = self.signing.stream_timestamps.get(stream)
         if last is not None and timestamp <= last:
             self.last_refusal = "replayed"
+            self.bad_signature = True
             return False
         if last is None and (timestamp <= self.stream_floor
                              or timestamp + 6000 * 1000 < self.signing.timestamp):
             self.last_refusal = "replayed"  # older than what this boat already accepted
+            self.bad_signature = True
             return False
         self.signing.stream_timestamps[stream] = timestamp
         self.signing.timestamp = max(self.signing.timestamp, timestamp)
@@ -155,7 +159,13 @@ class _CheckedMAVLink(mav.MAVLink):
 
     def decode(self, msgbuf: bytearray) -> Any:
         self.last_refusal = "unsigned"
+        self.bad_signature = False
         return super().decode(msgbuf)
+
+    def take_unsigned(self, allowed: frozenset[int]) -> Any:
+        """pymavlink's allow_unsigned_callback: ids in `allowed` without a signature; never
+        a frame whose signature failed (pymavlink would take it as unsigned)."""
+        return lambda _mav, msg_id: msg_id in allowed and not self.bad_signature
 
 
 @dataclass(frozen=True)
@@ -189,12 +199,21 @@ class Codec:
             self.mav.signing.timestamp = timestamp
             self.mav.signing.sign_outgoing = True
             self.mav.signing.allow_unsigned_callback = \
-                (lambda _mav, msg_id: msg_id in allowed) if allowed else None
+                self.mav.take_unsigned(allowed) if allowed else None
             self.mav.stream_floor = stream_floor
 
     @property
     def signed(self) -> bool:
         return self.key is not None
+
+    def require_signed(self, allow_unsigned: Sequence[int] = (mav.MAVLINK_MSG_ID_RADIO_STATUS,)
+                       ) -> None:
+        """From now on refuse unsigned frames but `allow_unsigned` (a standard vehicle
+        signs once SETUP_SIGNING reached it; its unsigned frames were taken until then)."""
+        allowed = frozenset(allow_unsigned)
+        self._allowed = allowed
+        self.mav.signing.allow_unsigned_callback = \
+            self.mav.take_unsigned(allowed) if allowed else None
 
     @property
     def timestamp(self) -> int:

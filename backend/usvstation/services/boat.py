@@ -94,10 +94,7 @@ class BoatService:
         device, baud = self.device, self.settings.baud
         factory = (stream_factory or self._stream_factory
                    or (lambda: open_stream(device, baud)))
-        config = LinkConfig(boat_id=self.settings.boat_id, station_id=self.settings.station_id,
-                            baud=baud, link_timeout_s=self.settings.heartbeat_timeout_s)
-        link = BoatLink(device, baud=baud, stream_factory=factory, config=config, key=self.key,
-                        clock=self.clock, session=self.entropy.randrange(1, 1 << 24))
+        link = self._make_link(device, factory)
         self.handler = LinkHandler(link, device, self.store, self.hub,
                                    self._on_report, self._on_reboot)
         self.runs.handler = self.handler
@@ -105,6 +102,14 @@ class BoatService:
             o = scenario.origin
             self.handler.frame = RampFrame(o.lat, o.lon, o.ramp_bearing_deg)
         await link.start()
+
+    def _make_link(self, device: str, factory: StreamFactory) -> BoatLink:
+        """The usv-link 2 link (services/standard_boat.py makes a stock autopilot's)."""
+        baud = self.settings.baud
+        config = LinkConfig(boat_id=self.settings.boat_id, station_id=self.settings.station_id,
+                            baud=baud, link_timeout_s=self.settings.heartbeat_timeout_s)
+        return BoatLink(device, baud=baud, stream_factory=factory, config=config, key=self.key,
+                        clock=self.clock, session=self.entropy.randrange(1, 1 << 24))
 
     async def stop(self) -> None:
         """Close the link and the simulated boat; sends the boat nothing."""

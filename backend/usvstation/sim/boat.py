@@ -47,6 +47,14 @@ from usvstation.link.mission import (
     item_problem,
     sequence_problem,
 )
+from usvstation.link.standard_mission import (
+    MISSION_STATES,
+    StandardItem,
+    nav_seq,
+    standard_armed,
+    standard_items,
+    standard_mode,
+)
 from usvstation.sim.frame import RampMotion
 from usvstation.sim.sensors import Battery, GpsNoise
 from usvstation.sim.vehicle import Vehicle, Waypoint
@@ -177,6 +185,8 @@ class BoatProtocol:
         self.ramp_rx: float | None = None  # link time of the latest USV_RAMP_POSE
         self.ramp_stale = False
         self.ramp_poses = 0
+        self._std_items: tuple[ActiveMission, tuple[StandardItem, ...]] | None = None
+        self._std_reached: tuple[int, int] = (0, 0)  # (mission id, waypoints reported)
 
     # ---- I/O boundary
     @property
@@ -241,8 +251,9 @@ class BoatProtocol:
             else mav.MAV_STATE_STANDBY
         base = mav.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED | (
             mav.MAV_MODE_FLAG_AUTO_ENABLED if self.state == S_RUNNING else 0)
+        base |= mav.MAV_MODE_FLAG_SAFETY_ARMED if standard_armed(self.state) else 0
         self._send(e.heartbeat_encode(mav.MAV_TYPE_SURFACE_BOAT, mav.MAV_AUTOPILOT_GENERIC,
-                                      base, self.state, status), now)
+                                      base, standard_mode(self.state), status), now)
         self._send(e.sys_status_encode(0, 0, 0, 0, round(self.battery.voltage * 1000), -1, -1,
                                        0, self.rejected, 0, 0, 0, 0), now)
         self._report(now)
@@ -271,6 +282,8 @@ class BoatProtocol:
         if src == self.cfg.boat_id:
             self.echoes += 1  # our own frames heard back: never a station
             return
+        if kind in _GCS_READS:  # any ground station may read (signed, with the key)
+            return self._on_gcs_read(msg, src, now)
         addressed = kind in _COMMANDING
         if src != self.cfg.station_id:
             if kind != "RADIO_STATUS":
@@ -575,6 +588,73 @@ class BoatProtocol:
                          CM.from_wire(it.speed_cms), float(heading[i]))
                 for i, it in enumerate(items)]
 
+    # ---- standard MAVLink for ground stations (docs/link.md "Standard MAVLink")
+    def _standard_items(self) -> tuple[StandardItem, ...]:
+        """The active mission as standard items (NAV_WAYPOINT + DO_CHANGE_SPEED)."""
+        a = self.active
+        if a is None:
+            return ()
+        if self._std_items is None or self._std_items[0] is not a:
+            self._std_items = (a, standard_items(a.items))
+        return self._std_items[1]
+
+    def _on_gcs_read(self, msg: Any, src: int, now: float) -> None:
+        """MISSION_REQUEST_LIST / _INT / MISSION_REQUEST from any ground station (the
+        paired station or another, read-only): the active mission as standard items.
+        Reading never refreshes the link-loss timer."""
+        if src != self.cfg.station_id:
+            self.other_systems[src] += 1
+        if msg.target_system not in (0, self.cfg.boat_id) or msg.get_type() == "MISSION_ACK":
+            return
+        e, comp = self.codec.mav, msg.get_srcComponent()
+        mtype = getattr(msg, "mission_type", mav.MAV_MISSION_TYPE_MISSION)
+        items = self._standard_items() if mtype == mav.MAV_MISSION_TYPE_MISSION else ()
+        if msg.get_type() == "MISSION_REQUEST_LIST":
+            self._send(e.mission_count_encode(src, comp, len(items), mtype), now)
+            return
+        if msg.seq >= len(items):
+            self._send(e.mission_ack_encode(src, comp, mav.MAV_MISSION_INVALID_SEQUENCE, mtype),
+                       now)
+            return
+        it = items[msg.seq]
+        if msg.get_type() == "MISSION_REQUEST":  # the deprecated float form, answered in kind
+            self._send(e.mission_item_encode(
+                src, comp, it.seq, it.frame, it.command, 0, it.autocontinue, it.param1,
+                it.param2, it.param3, it.param4, it.x * 1e-7, it.y * 1e-7, it.z, mtype), now)
+            return
+        self._send(e.mission_item_int_encode(
+            src, comp, it.seq, it.frame, it.command, 0, it.autocontinue, it.param1, it.param2,
+            it.param3, it.param4, it.x, it.y, it.z, mtype), now)
+
+    def _on_standard_upload(self, msg: Any, now: float) -> None:
+        """A standard upload from the paired station: usv-link 2 uploads in the dialect."""
+        self._send(self.codec.mav.mission_ack_encode(
+            self.cfg.station_id, msg.get_srcComponent(), mav.MAV_MISSION_UNSUPPORTED,
+            getattr(msg, "mission_type", 0)), now)
+
+    def _mission_current(self, now: float) -> None:
+        """MISSION_CURRENT with the heartbeat: the waypoint steered to (its NAV item)."""
+        items = self._standard_items()
+        seq = nav_seq(min(self.vehicle.state.waypoint_index, max(0, len(items) // 2))) \
+            if items else 0
+        self._send(self.codec.mav.mission_current_encode(
+            seq, len(items), MISSION_STATES.get(self.state, mav.MISSION_STATE_ACTIVE),
+            int(self.state == S_RUNNING)), now, telemetry=True)
+
+    def _items_reached(self, now: float) -> None:
+        """MISSION_ITEM_REACHED for every waypoint passed since the last (the last one when
+        the mission completes)."""
+        a = self.active
+        if a is None or self.state not in (S_RUNNING, S_HOLD, S_FAILSAFE, S_DONE):
+            return
+        reached = len(a.items) if self.state == S_DONE else \
+            min(self.vehicle.state.waypoint_index, len(a.items))
+        mission, done = self._std_reached
+        done = done if mission == a.mission_id else 0
+        for k in range(done, reached):
+            self._send(self.codec.mav.mission_item_reached_encode(nav_seq(k)), now)
+        self._std_reached = (a.mission_id, max(done, reached))
+
     # ---- time
     def update(self, now: float) -> None:
         """Advance to link time `now`: vehicle (up to a swap instant exactly), guidance
@@ -602,6 +682,7 @@ class BoatProtocol:
             full = False
             if self.next_heartbeat <= due:
                 self._heartbeat(now)
+                self._mission_current(now)
                 self.next_heartbeat = _next_on_grid(self.next_heartbeat, self.boat_time,
                                                     self.cfg.heartbeat_period_s)
                 full = True
@@ -618,6 +699,7 @@ class BoatProtocol:
             self._text(mav.MAV_SEVERITY_INFO, f"mission {self.active.mission_id} complete", now)
             self._report(now)
         self._follow_go_around(now)
+        self._items_reached(now)
         if self.ramp_rx is not None and not self.ramp_stale and \
                 now - self.ramp_rx > self.cfg.ramp_timeout_s:
             self._ramp_lost(now)
@@ -775,6 +857,21 @@ _FROM_STATION = {
 _COMMANDING = frozenset(("COMMAND_INT", "COMMAND_LONG", "USV_MISSION_BEGIN", "USV_MISSION_ITEM",
                          "USV_MISSION_END", "USV_MISSION_READ", "USV_GUIDANCE",
                          "USV_RAMP_POSE"))
+
+
+_FROM_STATION.update({
+    "MISSION_COUNT": BoatProtocol._on_standard_upload,
+    "MISSION_CLEAR_ALL": BoatProtocol._on_standard_upload,
+})
+_GCS_READS = frozenset(("MISSION_REQUEST_LIST", "MISSION_REQUEST_INT", "MISSION_REQUEST",
+                        "MISSION_ACK"))
+_COMMANDING = _COMMANDING | frozenset((
+    "MISSION_COUNT", "MISSION_ITEM_INT", "MISSION_ITEM", "MISSION_CLEAR_ALL",
+    "MISSION_SET_CURRENT", "SET_MODE", "SET_POSITION_TARGET_GLOBAL_INT",
+    "SET_POSITION_TARGET_LOCAL_NED", "MANUAL_CONTROL", "SETUP_SIGNING", "PARAM_SET",
+    "RC_CHANNELS_OVERRIDE", "MISSION_WRITE_PARTIAL_LIST"))
+"""Standard messages that would command the boat: refused from anyone but the paired
+station (which uses usv-link 2's own for what they do)."""
 
 
 def _next_on_grid(scheduled: float, now: float, period: float) -> float:

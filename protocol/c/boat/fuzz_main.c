@@ -255,6 +255,22 @@ static void station_frame(void)
         mavlink_msg_command_long_pack_status(sys, 190, &st_status, &st_msg, tgt, 1,
                                              (uint16_t)rnd(), 0, 1, 2, 3, 4, 5, 6, 7);
         break;
+    case 12: /* a ground station reading the mission (standard protocol), any sender */
+        if (below(3) == 0) {
+            mavlink_msg_mission_request_list_pack_status(
+                below(2) ? sys : (uint8_t)rnd(), 190, &st_status, &st_msg, tgt, 1,
+                below(8) == 0 ? (uint8_t)rnd() : 0);
+        } else if (below(2)) {
+            mavlink_msg_mission_request_int_pack_status(
+                below(2) ? sys : (uint8_t)rnd(), 190, &st_status, &st_msg, tgt, 1,
+                (uint16_t)below(2u * USV_MAX_ITEMS + 4u), below(8) == 0 ? (uint8_t)rnd() : 0);
+        } else {
+            mavlink_msg_mission_request_pack_status(
+                below(2) ? sys : (uint8_t)rnd(), 190, &st_status, &st_msg, tgt, 1,
+                below(4) == 0 ? (uint16_t)rnd() : (uint16_t)below(2u * USV_MAX_ITEMS),
+                below(8) == 0 ? (uint8_t)rnd() : 0);
+        }
+        break;
     default:
         mavlink_msg_heartbeat_pack_status(sys, 190, &st_status, &st_msg, MAV_TYPE_GCS,
                                           MAV_AUTOPILOT_INVALID, 0, 0, MAV_STATE_ACTIVE);

@@ -370,6 +370,9 @@ static void send_state(usv_boat_t *b)
     SEND(usv_mission_state, &s);
 }
 
+static uint32_t std_mode(uint8_t state);
+static int std_armed(uint8_t state);
+
 static void send_heartbeat(usv_boat_t *b)
 {
     mavlink_heartbeat_t h;
@@ -380,7 +383,10 @@ static void send_heartbeat(usv_boat_t *b)
     if (b->state == USV_BOAT_STATE_RUNNING) {
         h.base_mode |= MAV_MODE_FLAG_AUTO_ENABLED;
     }
-    h.custom_mode = b->state;
+    h.custom_mode = std_mode(b->state);
+    if (std_armed(b->state)) {
+        h.base_mode |= MAV_MODE_FLAG_SAFETY_ARMED;
+    }
     if (b->state == USV_BOAT_STATE_FAILSAFE) {
         h.system_status = MAV_STATE_CRITICAL;
     } else if (b->state == USV_BOAT_STATE_RUNNING || b->state == USV_BOAT_STATE_HOLD ||
@@ -997,6 +1003,265 @@ static void on_command_int(usv_boat_t *b, const mavlink_message_t *msg, uint32_t
     }
 }
 
+/* ------------------------------------------------ standard MAVLink for ground stations */
+/* Any ground station reads the active mission with the standard mission protocol
+ * (MISSION_REQUEST_LIST, MISSION_REQUEST_INT / MISSION_REQUEST): one NAV_WAYPOINT per
+ * waypoint, each but the last followed by DO_CHANGE_SPEED with the leg's planned speed
+ * (length / duration). HEARTBEAT names a mode (ArduPilot Rover's numbers, which
+ * ground stations use for a SURFACE_BOAT), MISSION_CURRENT follows it, and
+ * MISSION_ITEM_REACHED reports each waypoint passed (protocol/README.md section 3). */
+
+#define STD_HOLD 4u   /* motors stopped */
+#define STD_LOITER 5u /* keeping station */
+#define STD_AUTO 10u  /* following the mission */
+#define WGS84_A 6378137.0f
+#define WGS84_E2 6.69437999014e-3f
+
+static uint32_t std_mode(uint8_t state)
+{
+    switch (state) {
+    case USV_BOAT_STATE_IDLE:
+    case USV_BOAT_STATE_ABORTED:
+        return STD_HOLD;
+    case USV_BOAT_STATE_READY:
+    case USV_BOAT_STATE_HOLD:
+    case USV_BOAT_STATE_DONE:
+    case USV_BOAT_STATE_FAILSAFE:
+        return STD_LOITER;
+    default:
+        return STD_AUTO; /* RUNNING, GO_AROUND, and states this table does not name */
+    }
+}
+
+static int std_armed(uint8_t state)
+{
+    return state == USV_BOAT_STATE_RUNNING || state == USV_BOAT_STATE_HOLD ||
+           state == USV_BOAT_STATE_FAILSAFE || state == USV_BOAT_STATE_GO_AROUND;
+}
+
+static uint8_t std_mission_state(uint8_t state)
+{
+    switch (state) {
+    case USV_BOAT_STATE_READY:
+        return MISSION_STATE_NOT_STARTED;
+    case USV_BOAT_STATE_RUNNING:
+        return MISSION_STATE_ACTIVE;
+    case USV_BOAT_STATE_HOLD:
+    case USV_BOAT_STATE_FAILSAFE:
+        return MISSION_STATE_PAUSED;
+    case USV_BOAT_STATE_DONE:
+        return MISSION_STATE_COMPLETE;
+    case USV_BOAT_STATE_IDLE:
+    case USV_BOAT_STATE_ABORTED:
+        return MISSION_STATE_NO_MISSION;
+    default:
+        return MISSION_STATE_ACTIVE;
+    }
+}
+
+static uint16_t std_count(usv_boat_t *b)
+{
+    return b->has_active ? (uint16_t)(2u * active_mission(b)->count - 1u) : 0u;
+}
+
+/* Leg length on the WGS-84 ellipsoid: meridian and prime-vertical radii of curvature at
+ * the mid latitude (as link/standard_mission.py leg_length_m). */
+static float std_leg_m(int32_t lat1, int32_t lon1, int32_t lat2, int32_t lon2)
+{
+    float phi = ((float)lat1 + (float)lat2) * (0.5e-7f * PI_F / 180.0f);
+    float s = sinf(phi);
+    float w = 1.0f - WGS84_E2 * s * s;
+    float sw = sqrtf(w);
+    float dn = (float)(lat2 - lat1) * (1e-7f * PI_F / 180.0f) * (WGS84_A * (1.0f - WGS84_E2) /
+                                                               (w * sw));
+    float de = (float)(lon2 - lon1) * (1e-7f * PI_F / 180.0f) * (WGS84_A / sw) * cosf(phi);
+    return sqrtf(dn * dn + de * de);
+}
+
+/* The leg's planned speed (as link/standard_mission.py leg_speed): length / duration,
+ * or the mean of its end speeds where the plan follows eq. 11 (dT = 2 L / (v_a + v_b))
+ * within the wire's rounding (1e-7 deg positions, 1 ms, 1 cm/s). */
+static float std_leg_speed(const usv_mission_t *m, uint16_t w)
+{
+    uint32_t dt = m->t_ms[w + 1u] - m->t_ms[w];
+    float dt_s, geometric, mean;
+    if (dt == 0u) {
+        return 0.0f;
+    }
+    dt_s = (float)dt * 1e-3f;
+    geometric = std_leg_m(m->lat[w], m->lon[w], m->lat[w + 1u], m->lon[w + 1u]) / dt_s;
+    mean = (float)(m->speed_cms[w] + m->speed_cms[w + 1u]) * 0.005f;
+    return fabsf(mean - geometric) <= 0.01f + (0.02f + 0.001f * geometric) / dt_s ? mean
+                                                                                 : geometric;
+}
+
+static int std_is_read(uint32_t msgid)
+{
+    return msgid == MAVLINK_MSG_ID_MISSION_REQUEST_LIST ||
+           msgid == MAVLINK_MSG_ID_MISSION_REQUEST_INT || msgid == MAVLINK_MSG_ID_MISSION_REQUEST;
+}
+
+/* standard messages that would command the boat: refused from anyone but the station */
+static int std_is_control(uint32_t msgid)
+{
+    switch (msgid) {
+    case MAVLINK_MSG_ID_MISSION_COUNT:
+    case MAVLINK_MSG_ID_MISSION_ITEM_INT:
+    case MAVLINK_MSG_ID_MISSION_ITEM:
+    case MAVLINK_MSG_ID_MISSION_CLEAR_ALL:
+    case MAVLINK_MSG_ID_MISSION_SET_CURRENT:
+    case MAVLINK_MSG_ID_MISSION_WRITE_PARTIAL_LIST:
+    case MAVLINK_MSG_ID_SET_MODE:
+    case MAVLINK_MSG_ID_SET_POSITION_TARGET_GLOBAL_INT:
+    case MAVLINK_MSG_ID_SET_POSITION_TARGET_LOCAL_NED:
+    case MAVLINK_MSG_ID_MANUAL_CONTROL:
+    case MAVLINK_MSG_ID_RC_CHANNELS_OVERRIDE:
+    case MAVLINK_MSG_ID_SETUP_SIGNING:
+    case MAVLINK_MSG_ID_PARAM_SET:
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+static void std_send_ack(usv_boat_t *b, const mavlink_message_t *req, uint8_t result,
+                         uint8_t type)
+{
+    mavlink_mission_ack_t a;
+    memset(&a, 0, sizeof a);
+    a.target_system = req->sysid;
+    a.target_component = req->compid;
+    a.type = result;
+    a.mission_type = type;
+    SEND(mission_ack, &a);
+}
+
+static void std_on_read(usv_boat_t *b, const mavlink_message_t *msg)
+{
+    uint8_t target, type;
+    uint16_t seq = 0, count = std_count(b);
+    if (msg->msgid == MAVLINK_MSG_ID_MISSION_REQUEST_LIST) {
+        mavlink_mission_count_t c;
+        target = mavlink_msg_mission_request_list_get_target_system(msg);
+        type = mavlink_msg_mission_request_list_get_mission_type(msg);
+        if (target != 0u && target != b->cfg.boat_id) {
+            return;
+        }
+        memset(&c, 0, sizeof c);
+        c.target_system = msg->sysid;
+        c.target_component = msg->compid;
+        c.count = type == MAV_MISSION_TYPE_MISSION ? count : 0u;
+        c.mission_type = type;
+        SEND(mission_count, &c);
+        return;
+    }
+    if (msg->msgid == MAVLINK_MSG_ID_MISSION_REQUEST_INT) {
+        target = mavlink_msg_mission_request_int_get_target_system(msg);
+        type = mavlink_msg_mission_request_int_get_mission_type(msg);
+        seq = mavlink_msg_mission_request_int_get_seq(msg);
+    } else {
+        target = mavlink_msg_mission_request_get_target_system(msg);
+        type = mavlink_msg_mission_request_get_mission_type(msg);
+        seq = mavlink_msg_mission_request_get_seq(msg);
+    }
+    if (target != 0u && target != b->cfg.boat_id) {
+        return;
+    }
+    if (type != MAV_MISSION_TYPE_MISSION || seq >= count) {
+        std_send_ack(b, msg, MAV_MISSION_INVALID_SEQUENCE, type);
+        return;
+    }
+    {
+        const usv_mission_t *m = active_mission(b);
+        uint16_t w = (uint16_t)(seq / 2u);
+        mavlink_mission_item_int_t it;
+        memset(&it, 0, sizeof it);
+        it.target_system = msg->sysid;
+        it.target_component = msg->compid;
+        it.seq = seq;
+        it.autocontinue = 1;
+        it.mission_type = MAV_MISSION_TYPE_MISSION;
+        if (seq % 2u == 0u) {
+            it.frame = MAV_FRAME_GLOBAL_RELATIVE_ALT;
+            it.command = MAV_CMD_NAV_WAYPOINT;
+            it.x = m->lat[w];
+            it.y = m->lon[w];
+        } else {
+            it.frame = MAV_FRAME_MISSION;
+            it.command = MAV_CMD_DO_CHANGE_SPEED;
+            it.param1 = 1.0f; /* ground speed */
+            it.param2 = std_leg_speed(m, w);
+            it.param3 = -1.0f; /* throttle unchanged */
+        }
+        if (msg->msgid == MAVLINK_MSG_ID_MISSION_REQUEST_INT) {
+            SEND(mission_item_int, &it);
+        } else { /* the deprecated float form, answered in kind */
+            mavlink_mission_item_t f;
+            memset(&f, 0, sizeof f);
+            f.target_system = it.target_system;
+            f.target_component = it.target_component;
+            f.seq = it.seq;
+            f.frame = it.frame;
+            f.command = it.command;
+            f.autocontinue = 1;
+            f.param1 = it.param1;
+            f.param2 = it.param2;
+            f.param3 = it.param3;
+            f.x = (float)it.x * 1e-7f;
+            f.y = (float)it.y * 1e-7f;
+            f.mission_type = MAV_MISSION_TYPE_MISSION;
+            SEND(mission_item, &f);
+        }
+    }
+}
+
+/* MISSION_CURRENT with the heartbeat: the NAV item of the waypoint steered to */
+static void std_send_mission_current(usv_boat_t *b)
+{
+    mavlink_mission_current_t c;
+    memset(&c, 0, sizeof c);
+    if (b->has_active) { /* current_seq is the leg: the waypoint after it is steered to */
+        uint16_t last = (uint16_t)(active_mission(b)->count - 1u);
+        uint16_t w = b->state == USV_BOAT_STATE_RUNNING || b->state == USV_BOAT_STATE_HOLD ||
+                             b->state == USV_BOAT_STATE_FAILSAFE
+                         ? (b->current_seq < last ? (uint16_t)(b->current_seq + 1u) : last)
+                         : (b->state == USV_BOAT_STATE_DONE ? last : 0u);
+        c.seq = (uint16_t)(2u * w);
+    }
+    c.total = std_count(b);
+    c.mission_state = std_mission_state(b->state);
+    c.mission_mode = b->state == USV_BOAT_STATE_RUNNING ? 1u : 0u;
+    TELEMETRY(mission_current, &c);
+}
+
+/* MISSION_ITEM_REACHED for every waypoint passed since the last report (all of them when
+ * the mission is done) */
+static void std_items_reached(usv_boat_t *b)
+{
+    uint16_t reached;
+    mavlink_mission_item_reached_t r;
+    if (!b->has_active || !(b->state == USV_BOAT_STATE_RUNNING ||
+                            b->state == USV_BOAT_STATE_HOLD ||
+                            b->state == USV_BOAT_STATE_FAILSAFE ||
+                            b->state == USV_BOAT_STATE_DONE)) {
+        return;
+    }
+    if (b->std_reached_id != active_mission(b)->id) {
+        b->std_reached_id = active_mission(b)->id;
+        b->std_reached = 0;
+    }
+    reached = b->state == USV_BOAT_STATE_DONE ? active_mission(b)->count
+                                              : (uint16_t)(b->current_seq + 1u);
+    if (reached > active_mission(b)->count) {
+        reached = active_mission(b)->count;
+    }
+    while (b->std_reached < reached) {
+        r.seq = (uint16_t)(2u * b->std_reached);
+        SEND(mission_item_reached, &r);
+        b->std_reached++;
+    }
+}
+
 /* ------------------------------------------------------------------ receiving */
 
 static uint8_t target_of(const mavlink_message_t *msg)
@@ -1052,8 +1317,12 @@ static void on_frame(usv_boat_t *b, const mavlink_message_t *msg, uint32_t now)
     if (msg->sysid == b->cfg.boat_id) {
         return; /* our own frames heard back: never the station */
     }
+    if (std_is_read(msg->msgid)) {
+        std_on_read(b, msg); /* any ground station may read (with the key): never a command */
+        return;
+    }
     if (msg->sysid != b->cfg.station_id) {
-        if (is_control(msg->msgid)) {
+        if (is_control(msg->msgid) || std_is_control(msg->msgid)) {
             refuse(b, USV_REFUSE_SENDER);
         }
         return; /* other systems on the channel: never obeyed, never refresh the link */
@@ -1525,6 +1794,7 @@ void usv_boat_poll(usv_boat_t *b)
         on_byte(b, c, now); /* replies (ACKs, readback, TIMESYNC) go out right here */
     }
     tick(b, now);
+    std_items_reached(b);
     if (at_or_after(now, b->next_heartbeat_ms)) {
         b->next_heartbeat_ms = at_or_after(now, b->next_heartbeat_ms + USV_HEARTBEAT_MS)
                                    ? now + USV_HEARTBEAT_MS
@@ -1532,6 +1802,7 @@ void usv_boat_poll(usv_boat_t *b)
         send_heartbeat(b);
         send_state(b);
         send_slow_telemetry(b);
+        std_send_mission_current(b);
     } else {
         fill_state(b, &s);
         if (memcmp(&s, &b->last_state, sizeof s) != 0) {

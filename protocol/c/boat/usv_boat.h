@@ -181,6 +181,8 @@ typedef struct {
     uint16_t rejected;     /* total, saturating */
     mavlink_usv_mission_state_t last_state; /* last USV_MISSION_STATE sent (change detection) */
     uint32_t dropped_id;   /* last staging dropped (expired, ABORT): answered EXPIRED */
+    uint32_t std_reached_id; /* MISSION_ITEM_REACHED: the mission, and its waypoints */
+    uint16_t std_reached;    /* reported as reached so far */
 } usv_boat_t;
 
 /* Start the boat (state IDLE, nothing staged). Returns 0, or -1 on a bad config. */
