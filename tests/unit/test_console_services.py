@@ -15,7 +15,7 @@ from usvstation.services.plans import outdated_by, scenario_digest
 from usvstation.world.monitor import AlertEvent
 
 
-def test_link_lost_raises_one_warning_and_one_advisory_when_back():
+def test_link_lost_raises_one_warning_that_ends_when_the_link_is_back():
     raised: list[AlertEvent] = []
     alerts = LinkAlerts(raised.append)
     alerts.on_link_event(LinkDown("no frame from the boat for 3.0 s"))
@@ -25,7 +25,7 @@ def test_link_lost_raises_one_warning_and_one_advisory_when_back():
     assert raised == [
         AlertEvent("warning", "link_lost",
                    "link to the boat lost: no frame from the boat for 3.0 s"),
-        AlertEvent("advisory", "link_restored", "link to the boat restored")]
+        AlertEvent(None, "link_lost", "link to the boat restored", announce=False, rose=False)]
 
 
 def test_outdated_by_names_the_changed_fields_of_the_same_scenario():
