@@ -52,6 +52,26 @@ def test_a_plan_made_from_the_working_scenario_stays_uploadable_until_it_changes
     assert outdated_by(job, edited) == ["vessel"]
 
 
+def test_plan_from_a_boat_inside_the_ship_is_refused_in_one_sentence():
+    import pytest
+
+    from usvstation.scenario import parse_scenario
+    from usvstation.services.errors import Conflict
+    from usvstation.services.plans import scenario_from_boat
+
+    doc = load_scenario("case1").model_dump(mode="json")
+    doc["mother_ship"] = {"speed": 0.0, "course_deg": 270.0, "length": 40.0, "beam": 10.0,
+                          "ramp_width": 3.0}
+    row = {"x": -10.0, "y": 1.0, "ramp_heading_deg": 0.0, "speed": 0.5, "boat_time": 3.0,
+           "run": None}
+    with pytest.raises(Conflict) as refused:
+        scenario_from_boat(parse_scenario(doc), row, None)
+    assert str(refused.value) == (
+        "cannot plan from the boat: start: (-10, 1) lies inside the mother ship's hull (x in "
+        "[-40, 0], |y| <= 5 m of the ramp frame), behind the ramp; a recovery starts in the "
+        "water")
+
+
 def _mbtiles(path, tiles):
     db = sqlite3.connect(path)
     db.execute("CREATE TABLE metadata (name TEXT, value TEXT)")
