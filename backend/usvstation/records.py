@@ -425,6 +425,16 @@ class RampPose(TypedDict):
     stale: bool  # from an own ship without a fix for a while: dead-reckoned
 
 
+class ShipShape(TypedDict):
+    """The mother ship as the console draws it, in the ramp frame (the ship-fixed frame)."""
+
+    length: float
+    beam: float | None
+    ramp_width: float
+    outline: list[list[float]] | None  # the hull polygon (scenario/hull.py), None: no shape
+    reference: list[float]  # the ship's position reference (GNSS antenna), [x, y]
+
+
 class Target(TypedDict):
     """A track of the world model; x, y, velocities in the ramp frame (rvx, rvy relative
     to the ramp, vx, vy over ground)."""
@@ -471,6 +481,7 @@ class WorldSnapshot(TypedDict):
     time: str
     own_ship: OwnShip | None
     ramp: RampPose | None
+    ship: ShipShape | None  # the working scenario's mother ship, if it has one
     targets: list[Target]
     stats: InputStats
 

@@ -165,3 +165,18 @@ def test_targets_carry_class_heading_and_are_lost_after_silence() -> None:
     assert (t["ais_class"], t["heading_deg"], t["length"], t["lost"]) == ("B", 5.0, 12.0, False)
     (t,) = world.targets(LOST_AFTER_S + 0.1)
     assert t["lost"]
+
+
+@pytest.mark.parametrize(("arm", "reference"), [
+    (LeverArm(forward=-20.0), (-20.0, 0.0)),  # a stern ramp 20 m aft: the antenna forward
+    (LeverArm(forward=-20.0, starboard=5.0), (-20.0, -5.0)),  # +y of a stern ramp: starboard
+    (LeverArm(forward=10.0, starboard=0.0, ramp_bearing_offset_deg=0.0), (-10.0, 0.0))])
+def test_the_ships_reference_in_the_ramp_frame_agrees_with_the_ramp_pose(arm, reference) -> None:
+    from usvstation.world.model import reference_in_ramp
+
+    assert reference_in_ramp(arm) == pytest.approx(reference, abs=1e-9)
+    world = World(lever_arm=arm)
+    world.update_own(0.0, lat=LAT, lon=LON, heading_deg=33.0)
+    pose = world.ramp(0.0)
+    x, y = pose.frame.to_ramp(LAT, LON)  # the antenna seen from the ramp
+    assert (float(x), float(y)) == pytest.approx(reference, abs=1e-3)

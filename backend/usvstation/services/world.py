@@ -25,15 +25,16 @@ from typing import Any
 from usvstation.clock import REAL_CLOCK, Clock
 from usvstation.geo import RampFrame
 from usvstation.link.protocol import RampPoseSample
-from usvstation.records import InputSource, Target, WorldSnapshot
+from usvstation.records import InputSource, ShipShape, Target, WorldSnapshot
 from usvstation.scenario import Scenario
+from usvstation.scenario.hull import hull_polygon
 from usvstation.scenario.ships import LeverArm
 from usvstation.services.hub import LiveHub
 from usvstation.shipinputs.decode import SentenceDecoder, apply_reports
 from usvstation.shipinputs.readers import Source, open_udp, parse_source, run_stream_source
 from usvstation.sim.sea import SimulatedSea, UdpSender
 from usvstation.store.db import utc_now
-from usvstation.world.model import World, enu_to_compass
+from usvstation.world.model import World, enu_to_compass, reference_in_ramp
 
 log = logging.getLogger(__name__)
 PUBLISH_HZ = 2.0
@@ -79,6 +80,7 @@ class WorldService:
         self.tick_listeners: list[Callable[[World, float], None]] = []
         self._published_at = -1e9
         self.pose_listeners: list[Callable[[RampPoseSample | None], None]] = []
+        self.ship: ShipShape | None = None
         self._pose_streamed = False
 
     # --- lifecycle -------------------------------------------------------------------------
@@ -159,6 +161,11 @@ class WorldService:
         """Anchor the ramp at the scenario origin; its obstacles become `manual` tracks."""
         ms = scenario.mother_ship
         self.world.lever_arm = ms.lever_arm if ms is not None else LeverArm()
+        ring = hull_polygon(ms)
+        self.ship = None if ms is None else {
+            "length": ms.length, "beam": ms.beam, "ramp_width": ms.ramp_width,
+            "outline": None if ring is None else [[x, y] for x, y in ring],
+            "reference": [round(v, 3) for v in reference_in_ramp(ms.lever_arm)]}
         if scenario.origin is None:
             return
         o = scenario.origin
@@ -246,7 +253,7 @@ class WorldService:
         targets = [_rounded(v) for v in self.world.targets(t)]
         s = self.decoder.stats
         return {"time": utc_now(self.clock), "own_ship": own_out, "ramp": ramp_out,
-                "targets": targets,
+                "ship": self.ship, "targets": targets,
                 "stats": {"sentences": s.sentences, "bad": s.bad, "ignored": s.ignored,
                           "bad_reasons": dict(s.reasons),
                           "sources": list(self.source_state.values())}}

@@ -142,6 +142,16 @@ def ramp_pose(own: OwnShip, arm: LeverArm, t: float) -> RampPose:
                     moving=True)
 
 
+def reference_in_ramp(arm: LeverArm) -> tuple[float, float]:
+    """The ship's position reference (its GNSS antenna) in the ramp frame: the lever arm
+    from the reference to the ramp end, reversed and turned into ramp axes (the bow points
+    `ramp_bearing_offset_deg` counter-clockwise from +x, starboard 90 degrees clockwise of it)."""
+    bow = math.radians(arm.ramp_bearing_offset_deg)
+    stbd = bow - math.pi / 2.0
+    return (-arm.forward * math.cos(bow) - arm.starboard * math.cos(stbd),
+            -arm.forward * math.sin(bow) - arm.starboard * math.sin(stbd))
+
+
 @dataclass(frozen=True)
 class Track:
     """One target: its last report, dead-reckoned between reports."""
