@@ -81,9 +81,11 @@ export function updateStale() {
   $('upload').disabled = !state.plan || stale;
 }
 
-export async function runPlan() {
+/** Plan the working scenario, or (`fromBoat`) from where the boat is now: its position,
+ * heading and speed, the obstacles where they are at that instant of the run. */
+export async function runPlan({ fromBoat = false } = {}) {
   showError('plan', null);
-  const button = $('plan');
+  const button = $(fromBoat ? 'plan-from-boat' : 'plan');
   button.disabled = true;
   const started = performance.now();
   const progress = $('plan-progress');
@@ -91,6 +93,7 @@ export async function runPlan() {
     await ui.editor.flush();
     const seedText = $('seed').value.trim();
     const body = seedText === '' ? {} : { seed: Number(seedText) };
+    if (fromBoat) body.from_boat = true;
     if (!$('planner-label').hidden && $('planner').value) body.planner = $('planner').value;
     const accepted = await api.post('/api/plans', body);
     state.waitingPlan = accepted.id;
@@ -177,7 +180,8 @@ async function overlay(id) {
 }
 
 export function bindPlanControls() {
-  $('plan').addEventListener('click', runPlan);
+  $('plan').addEventListener('click', () => runPlan());
+  $('plan-from-boat').addEventListener('click', () => runPlan({ fromBoat: true }));
   on('units', showSpeedLegend);
   $('overlay-plan').addEventListener('change', (e) => overlay(e.target.value));
   $('overlay-plan').addEventListener('focus', refreshOverlayChoices);
