@@ -19,7 +19,7 @@ import { state, ui } from './store.js';
 import { bindShortcuts } from './shortcuts.js';
 import { bindTimebar } from './timebar.js';
 import { $, nextTask, showError } from './util.js';
-import { bindWorld, loadWorld } from './world.js';
+import { bindWorld, loadWorld, worldSnapshot } from './world.js';
 
 async function linkViser() {
   const link = $('viser-link');
@@ -92,6 +92,7 @@ async function main() {
 window.usvConsole = {
   get map() { return ui.map; },
   get state() { return state; },
+  get world() { return worldSnapshot(); },
   planPositionAt,
   sound,
   setAlertRepeatMs: setRepeatMs,

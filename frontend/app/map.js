@@ -783,10 +783,13 @@ export class ConsoleMap {
           icon: L.divIcon({ className: 'target-marker', iconSize: [28, 28], iconAnchor: [14, 14],
             html: '' }) });
         const vector = L.polyline([], { weight: 2, interactive: false, className: 'target-vector' });
+        const relative = L.polyline([], { weight: 1.5, dashArray: '3 4', interactive: false,
+          className: 'target-relative' });
         marker.addTo(this.targetLayer);
         vector.addTo(this.targetLayer);
+        relative.addTo(this.targetLayer);
         marker.bindTooltip('', { direction: 'top', offset: [0, -12] });
-        entry = { marker, vector, target: t, html: null };
+        entry = { marker, vector, relative, target: t, html: null };
         this.targets.set(t.id, entry);
       }
       entry.target = t;
@@ -795,6 +798,7 @@ export class ConsoleMap {
       if (seen.has(id)) continue;
       entry.marker.remove();
       entry.vector.remove();
+      entry.relative.remove();
       this.targets.delete(id);
     }
     this.drawTargets();
@@ -819,8 +823,11 @@ export class ConsoleMap {
       entry.marker.getElement()?.setAttribute('data-target', t.id);
       this.turn(entry.marker, t.heading_deg ?? t.course_deg);
       const secs = minutes * 60;
+      // true (over ground, solid) and relative to the ship (dashed: where the plan sees it)
       entry.vector.setLatLngs(t.speed > 0.05 && !t.lost
         ? [this.ll(t.x, t.y), this.ll(t.x + t.vx * secs, t.y + t.vy * secs)] : []);
+      entry.relative.setLatLngs(Math.hypot(t.rvx, t.rvy) > 0.05 && !t.lost
+        ? [this.ll(t.x, t.y), this.ll(t.x + t.rvx * secs, t.y + t.rvy * secs)] : []);
       entry.vector.getElement()?.classList.toggle('danger', danger.has(t.id));
       entry.marker.setTooltipContent(`${targetName(t)}${t.mmsi && t.name ? ` (MMSI ${t.mmsi})`
         : ''}: ${targetClass(t)}, SOG ${t.speed.toFixed(1)} m/s, COG ${t.course_deg.toFixed(0)}°`

@@ -76,7 +76,10 @@ export function updateSeedHint() {
 
 export function updateStale() {
   updateSeedHint();
-  const stale = Boolean(state.plan) && !ui.editor.matches(state.plan.scenario);
+  // a plan from the boat is made from the working scenario it was asked against (its
+  // `basis`), which is what must not have changed
+  const basis = state.plan?.basisScenario ?? state.plan?.scenario;
+  const stale = Boolean(state.plan) && !ui.editor.matches(basis);
   $('plan-stale').hidden = !stale;
   $('upload').disabled = !state.plan || stale;
 }
@@ -94,6 +97,7 @@ export async function runPlan({ fromBoat = false } = {}) {
     const seedText = $('seed').value.trim();
     const body = seedText === '' ? {} : { seed: Number(seedText) };
     if (fromBoat) body.from_boat = true;
+    const asked = JSON.parse(JSON.stringify(ui.editor.scenario));
     if (!$('planner-label').hidden && $('planner').value) body.planner = $('planner').value;
     const accepted = await api.post('/api/plans', body);
     state.waitingPlan = accepted.id;
@@ -107,6 +111,7 @@ export async function runPlan({ fromBoat = false } = {}) {
       await sleep(150);
     }
     if (job.status === 'failed') throw new Error(`no plan: ${job.error}`);
+    if (fromBoat) job.basisScenario = asked;
     showPlan(job);
     refreshOverlayChoices();
   } catch (err) {

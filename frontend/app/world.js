@@ -12,6 +12,9 @@ import { $, fmt } from './util.js';
 
 const world = { snapshot: null, monitor: null };
 
+/** The latest world snapshot (for tests and the curious). */
+export const worldSnapshot = () => world.snapshot;
+
 /** DCPA (m) and TCPA (s) of a target at relative position p with relative velocity w (the
  * vector form the station's monitor uses: TCPA = -(p.w)/|w|^2, DCPA = |p x w|/|w|). */
 export function dcpaTcpa(px, py, wx, wy) {

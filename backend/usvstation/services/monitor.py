@@ -104,8 +104,8 @@ class MonitorService:
         self.run: int | None = None
         # the first run of a recovery: the runs a hot swap opens continue it, and its alerts
         self.episode: int | None = None
-        self.swapped_to: str | None = None  # the mission of a swap the boat has yet to run
-        self.handover = False  # the run ended replaced by that swap: the next run continues
+        self.episode_runs: set[int] = set()
+        self.handover = False  # the run ended replaced by a swap: the next run continues
         self.scenario: Scenario | None = None
         self.waypoints: np.ndarray | None = None
         self.t0: float | None = None  # boat time of the plan's t = 0
@@ -153,7 +153,7 @@ class MonitorService:
             if run["state"] == "active":
                 self.arm(run["id"], run.get("mission"))
             elif run["id"] == self.run:
-                if run["state"] == "gone" and self.swapped_to not in (None, run["mission"]):
+                if run["state"] == "gone" and self.swap_plans():
                     self.handover = True  # hot-swapped: the swap's run goes on with it
                 else:
                     self.disarm(run["state"])
@@ -165,17 +165,26 @@ class MonitorService:
         job = self.plans.get(mission.plan_id) if mission is not None else None
         if not job or not job["plan"]:
             return
-        continues = mission_id is not None and mission_id == self.swapped_to
+        continues = self.episode is not None and job["id"] in self.swap_plans()
         if not continues and (self.run is not None or self.handover):
             self.disarm("replaced")
-        self.swapped_to, self.handover = None, False
+        self.handover = False
         if self.episode is None:
             self.episode = run
+        self.episode_runs.add(run)
         self.use_plan(job, run)
         t = self.world.clock.now()
         pose = self.world.world.ramp(t)
         if pose is not None and self.scenario is not None:
             self.world.world.set_manual(t, self._charted(pose, t), pose.frame)
+
+    def swap_plans(self) -> set[str]:
+        """The plans re-plans of this recovery are swapping or swapped onto the boat: a run
+        of one of them continues the recovery (hot swaps open a run each, and the boat may
+        report the new run before or after the old one ends)."""
+        return {r["plan_id"] for r in self.replan.replans.values()
+                if r["plan_id"] and r["state"] in ("planning", "proposed", "applied")
+                and r["run_id"] in self.episode_runs}
 
     def _charted(self, pose: RampPose, t: float) -> list[tuple[float, float, float, float,
                                                                float]]:
@@ -215,7 +224,7 @@ class MonitorService:
         self.records = {k: r for k, r in self.records.items() if k[0] is None}
         self.tracker = AlertTracker(self.config)
         self.run, self.waypoints, self.t0, self.episode = None, None, None, None
-        self.swapped_to, self.handover = None, False
+        self.episode_runs, self.handover = set(), False
 
     def on_telemetry(self, row: TelemetryRow) -> None:
         if self.waypoints is None or row.get("run") != self.run or row.get("lat") is None:
@@ -495,7 +504,6 @@ class ReplanService:
             return
         record.update(state="applied", mission_id=mission["id"], error=None,
                       latency_ms=round((m.clock.now() - self._t_event[record["id"]]) * 1000, 1))
-        m.swapped_to = mission["id"]
         job = m.plans.get(record["plan_id"])
         if job is not None:
             m.use_plan(job, m.run)
