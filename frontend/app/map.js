@@ -785,20 +785,21 @@ export class ConsoleMap {
         const vector = L.polyline([], { weight: 2, interactive: false, className: 'target-vector' });
         const relative = L.polyline([], { weight: 1.5, dashArray: '3 4', interactive: false,
           className: 'target-relative' });
+        const size = L.circle([0, 0], { radius: t.radius, weight: 1, dashArray: '2 3',
+          fillOpacity: 0.08, interactive: false, className: 'target-size' });
+        size.addTo(this.targetLayer);
         marker.addTo(this.targetLayer);
         vector.addTo(this.targetLayer);
         relative.addTo(this.targetLayer);
         marker.bindTooltip('', { direction: 'top', offset: [0, -12] });
-        entry = { marker, vector, relative, target: t, html: null };
+        entry = { marker, vector, relative, size, target: t, html: null };
         this.targets.set(t.id, entry);
       }
       entry.target = t;
     }
     for (const [id, entry] of this.targets) {
       if (seen.has(id)) continue;
-      entry.marker.remove();
-      entry.vector.remove();
-      entry.relative.remove();
+      for (const layer of [entry.marker, entry.vector, entry.relative, entry.size]) layer.remove();
       this.targets.delete(id);
     }
     this.drawTargets();
@@ -821,6 +822,9 @@ export class ConsoleMap {
       }
       entry.marker.setLatLng(this.ll(t.x, t.y));
       entry.marker.getElement()?.setAttribute('data-target', t.id);
+      entry.size.setLatLng(this.ll(t.x, t.y));
+      entry.size.setRadius(t.radius); // its hull to scale: half its length (5 m unknown)
+      entry.size.getElement()?.classList.toggle('danger', danger.has(t.id));
       this.turn(entry.marker, t.heading_deg ?? t.course_deg);
       const secs = minutes * 60;
       // true (over ground, solid) and relative to the ship (dashed: where the plan sees it)

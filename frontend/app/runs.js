@@ -64,9 +64,9 @@ export async function showRun(id, { live }) {
     const run = runs.find((r) => r.id === id);
     if (run && run.plan_id && (!state.plan || state.plan.id !== run.plan_id)) {
       const job = await api.get(`/api/plans/${run.plan_id}`);
-      // a run's plan made from the working scenario (from the boat, a re-plan: the station
-      // kept its `basis`) was uploaded against the working scenario of then: shown with it
-      if (state.shown === shown && shown.live && job.basis && ui.editor.scenario) {
+      // a live run's plan (from the boat, a re-plan) is on the boat: judged against the
+      // working scenario it runs with, not its own start
+      if (state.shown === shown && shown.live && ui.editor.scenario) {
         job.basisScenario = JSON.parse(JSON.stringify(ui.editor.scenario));
       }
       showPlan(job);

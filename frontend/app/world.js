@@ -113,6 +113,7 @@ export function showWorld(snapshot) {
   world.snapshot = snapshot;
   ui.map.setShip(snapshot.ship ?? null);
   ui.map.setRampPose(snapshot.ramp);
+  ui.charts.setRampMotion(snapshot.ramp, ui.map.frame);
   renderOwnShip(snapshot);
   renderTargets();
 }

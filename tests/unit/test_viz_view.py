@@ -193,6 +193,7 @@ def test_view_draws_the_hull_and_targets_and_switches_palette(view):
     assert set(view._target_nodes) == {"ais:1"}
     view.gui["palette"].value = "night"  # as when the operator picks it
     assert view.palette is PALETTES["night"]
+    assert [label.visible for label in view._axis_labels] == [False, False]
     assert set(view._target_nodes) == {"ais:1"} and len(view._ship_nodes) == 2
     view.show_targets([], 0.0)
     assert view._target_nodes == {}

@@ -5,7 +5,8 @@ Pure geometry and colours (NumPy, no viser), so it is tested without a server; v
 puts the results in the viser scene.
 
 - Palettes after ECDIS (IEC 62288): day on a light sea, dusk on a dark grey one, night dark
-  and red only (nothing brighter than the console's #e03c1e), for the scene and viser's GUI.
+  and red only (nothing brighter than the console's #e03c1e; viser's labels, drawn on white,
+  are hidden), for the scene and viser's GUI.
 - The hull: the mother ship's outline in the ramp frame (scenario/hull.py: `outline`, else
   the box x in [-length, 0], |y| <= beam / 2) as a prism over the time axis, since in the
   ship-fixed frame the hull stands still; a ship without a shape shows its length on the
@@ -47,6 +48,7 @@ class Palette:
     lost: Rgb
     start: Rgb
     plane: Rgb
+    labels: bool = True  # viser draws labels on white: hidden at night
 
 
 PALETTES: dict[str, Palette] = {
@@ -61,7 +63,7 @@ PALETTES: dict[str, Palette] = {
     "night": Palette("night", True, (90, 18, 8), (10, 0, 0), (60, 12, 6),
                      (200, 50, 30), (224, 60, 30), (110, 24, 10), (140, 36, 20),
                      (140, 36, 20), (90, 18, 8), (200, 50, 30), (224, 60, 30),
-                     (80, 18, 8), (160, 40, 20), (60, 12, 6)),
+                     (80, 18, 8), (160, 40, 20), (60, 12, 6), labels=False),
 }
 
 

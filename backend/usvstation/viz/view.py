@@ -109,6 +109,7 @@ class ThreeDView:
         self._dangerous: frozenset[str] = frozenset()
         self._target_nodes: dict[str, list[Any]] = {}
         self._ship_nodes: list[Any] = []
+        self._axis_labels: list[Any] = []
         self._plane_bounds = (-10.0, 130.0, -40.0, 40.0)
 
     @property
@@ -126,9 +127,10 @@ class ThreeDView:
         camera.position = (100.0, -60.0, 38.0)
         camera.look_at = (40.0, 0.0, 12.0)
         self.layers = {key: scene.add_frame(f"/{key}", show_axes=False) for key in LAYERS}
-        scene.add_label("/ramp/x_label", "x (m), out to sea", position=(150.0, 0.0, 0.0))
-        scene.add_label("/ramp/t_label", f"t (s) up, {self.time_scale:g} m per s",
-                        position=(0.0, 0.0, 40.0 * self.time_scale))
+        self._axis_labels = [
+            scene.add_label("/ramp/x_label", "x (m), out to sea", position=(150.0, 0.0, 0.0)),
+            scene.add_label("/ramp/t_label", f"t (s) up, {self.time_scale:g} m per s",
+                            position=(0.0, 0.0, 40.0 * self.time_scale))]
         self._draw_ramp()
         self._draw_plane(-10.0, 130.0, -40.0, 40.0)
         self._planned_marker = scene.add_icosphere("/time/planned", radius=1.0,
@@ -158,6 +160,9 @@ class ThreeDView:
         self.server.gui.configure_theme(dark_mode=p.dark, brand_color=p.brand,
                                         show_share_button=False)
         self.server.scene.set_background_image(background_image(p), format="png")
+        labels = self._axis_labels + [nodes[2] for nodes in self._target_nodes.values()]
+        for label in labels:  # viser draws labels on white: none at night
+            label.visible = p.labels
 
     def _build_gui(self) -> None:
         gui = self.server.gui
@@ -333,7 +338,8 @@ class ThreeDView:
                                             thickness=0.3),
                     scene.add_icosphere(f"{key}/now", radius=1.5, color=sweep.color,
                                         position=sweep.position),
-                    scene.add_label(f"{key}/label", sweep.label, position=sweep.position)]
+                    scene.add_label(f"{key}/label", sweep.label, position=sweep.position,
+                                    visible=self.palette.labels)]
 
     def set_palette(self, name: str) -> None:
         """Day, dusk or night: the GUI's theme, the background and every drawn colour."""
