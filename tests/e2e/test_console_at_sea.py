@@ -351,6 +351,9 @@ def test_at_sea_the_mate_accepts_a_replan_and_the_boat_arrives_clear(page, stati
                                                              "active"), 180)
     assert final["state"] == "completed", final
     expect(page.locator("#mission-state")).to_contain_text("completed", timeout=15_000)
+    # nothing left to accept: a later proposal (a slip on the swapped run) ends with the run
+    assert not [p for p in c.get("/api/replans").json() if p["state"] == "proposed"]
+    expect(proposal).to_be_hidden()
     samples = page.evaluate("clearInterval(window.__sampler), window.__samples")
     for palette in ("day", "dusk", "night"):  # the docs' screenshots: the recovery done
         page.select_option("#set-palette", palette)

@@ -130,3 +130,29 @@ def test_the_link_alert_ends_when_the_link_is_back(tmp_path) -> None:
 
     run_station(tmp_path / "data", body)
 
+
+
+def test_a_proposal_is_withdrawn_when_its_run_ends(tmp_path) -> None:
+    from test_live_loop import PARK, TARGET, first, put_scenario_and_wait_parked, scenario
+
+    async def body(sim: SimStation) -> None:
+        c = sim.client
+        await put_scenario_and_wait_parked(sim, scenario(), TARGET, PARK)
+        job = await sim.wait_plan((await c.post("/api/plans", json={"seed": 1})).json()["id"])
+        await sim.fly(job["id"])
+        proposal = await first(sim, "/api/replans", lambda p: p["state"] == "proposed", 120,
+                               "a proposed re-plan")
+        assert (await c.post("/api/boat/command", json={"command": "abort"})).status_code == 200
+
+        async def withdrawn() -> dict | None:
+            (p,) = [p for p in await sim.get("/api/replans") if p["id"] == proposal["id"]]
+            return p if p["state"] == "failed" else None
+
+        p = await sim.poll(withdrawn, 30, "the proposal withdrawn")
+        assert p["error"] == f"run {proposal['run_id']} aborted before the re-plan was confirmed"
+        confirm = await c.post(f"/api/replans/{proposal['id']}/confirm")
+        assert confirm.status_code == 409
+        assert not [a for a in await sim.get("/api/alerts") if a["active"]
+                    and a["run_id"] is not None]
+
+    run_station(tmp_path / "data", body, replan="confirm")

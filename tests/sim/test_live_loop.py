@@ -143,9 +143,10 @@ def test_turning_target_warns_proposes_a_replan_and_confirm_swaps_it(tmp_path) -
         alerts = await sim.get("/api/alerts")
         one_alert_per_cause(alerts)
         assert not [a for a in alerts if a["kind"] == "collision_course"]  # all static
-        # the run is over: its alerts ended with it
+        # the run is over: its alerts ended with it, and no re-plan is left proposed
         assert not [a for a in await sim.get("/api/alerts") if a["active"]
                     and a["run_id"] is not None]
+        assert not [p for p in await sim.get("/api/replans") if p["state"] == "proposed"]
         assert any(e["data"]["id"] == warning["id"] for e in sim.events
                    if e["type"] == "alert")
 

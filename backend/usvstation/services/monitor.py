@@ -216,11 +216,14 @@ class MonitorService:
         self.t0 = None
 
     def disarm(self, state: str = "ended") -> None:
-        """The run ended: its alerts end with it."""
+        """The run ended: its alerts end with it, and a re-plan still awaiting the operator
+        is withdrawn (there is nothing left to swap it onto)."""
         for kind, target in list(self.tracker.levels):
             event = self.tracker.end(kind, target, f"run {self.run} {state}")
             if event is not None:
                 self.record(event, scoped=True)
+        self.replan.withdraw(self.episode_runs, f"run {self.run} {state} before the re-plan "
+                             "was confirmed")
         self.records = {k: r for k, r in self.records.items() if k[0] is None}
         self.tracker = AlertTracker(self.config)
         self.run, self.waypoints, self.t0, self.episode = None, None, None, None
@@ -427,6 +430,10 @@ class ReplanService:
                     record.update(state="failed", error=job["error"])
                     return
                 if not apply:
+                    if record["run_id"] not in m.episode_runs:  # the run ended meanwhile
+                        record.update(state="failed", error=f"run {record['run_id']} ended "
+                                      "before the re-plan was ready")
+                        return
                     record["state"] = "proposed"
                     return
                 if not self._instant_passed(record):
@@ -448,6 +455,15 @@ class ReplanService:
                                      awaiting_operator=record["state"] == "proposed",
                                      last_t=self.state.last_t)
             self._save(record)
+
+    def withdraw(self, runs: set[int], why: str) -> None:
+        """Fail the proposals of these runs (their recovery ended): never left proposed."""
+        for record in self.replans.values():
+            if record["state"] == "proposed" and record["run_id"] in runs:
+                record.update(state="failed", error=why)
+                self._save(record)
+        if self.state.awaiting_operator:
+            self.state = ReplanState(last_t=self.state.last_t)
 
     def _proposed(self, replan_id: str) -> Replan:
         """The re-plan awaiting the operator; 404 or 409 otherwise."""
