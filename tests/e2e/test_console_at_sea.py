@@ -8,7 +8,8 @@ onto the plan and crawls across it), `--replan confirm`, the boat and the sea at
   under the plan's margin, drawn within 2 m of the plan it follows (or of its own cross-track
   when the boat is further off: the same frame), the ramp moving with the ship; one alert per
   cause and target.
-- Symbols by source, lost targets, an automatic swap and its reason, from live events.
+- Symbols by source, lost targets, an automatic swap and its reason, from live events;
+  Silence apart from Acknowledge, and the sound repeated while a warning is unacknowledged.
 - A start inside the ship refused in one sentence; palettes, hover contrast, the command bar
   on a tablet; the docs' screenshots of the console and the 3D view by day, dusk and night.
 - After a restart no link alert stays open; the own ship's feed stopped: a warning within
@@ -227,6 +228,46 @@ def test_symbols_by_source_lost_targets_and_an_automatic_swap(page, station):
     page.evaluate(EMIT, ["world", world])  # back to the station's world
     expect(page.locator(".target-marker")).to_have_count(len([
         t for t in world["targets"] if t["source"] != "manual"]))
+
+
+def test_silence_apart_from_acknowledge_and_the_sound_repeated_while_unacknowledged(page,
+                                                                                    station):
+    """The bar's Silence stops an alert's sound until the station announces it again; an
+    active, unacknowledged warning sounds again every repeat interval (30 s; shortened here
+    through the console's test hook), an acknowledged one does not."""
+    open_console(page, station)
+    page.evaluate("usvConsole.setAlertRepeatMs(300)")
+    beeps = "usvConsole.sound.count"
+    t0 = "2026-01-01T00:00:00.000Z"
+    warning = {"id": "w1", "time": t0, "level": "warning", "kind": "cross_track",
+               "message": "cross-track 11.0 m off the plan", "target_id": None, "run_id": 1,
+               "acknowledged": False, "active": True, "updated_at": t0, "announced_at": t0,
+               "ended_at": None}
+    before = page.evaluate(beeps)
+    page.evaluate(EMIT, ["alert", warning])
+    expect(page.locator("#alert-now")).to_have_text("WARNING: cross-track 11.0 m off the plan")
+    page.wait_for_function(f"{beeps} >= {before + 3}")  # announced, then repeated
+    page.click("#alert-bar-silence")
+    expect(page.locator("#alert-bar-silence")).to_be_hidden()
+    silenced = page.evaluate(beeps)
+    page.evaluate(EMIT, ["alert", {**warning, "message": "cross-track 12.0 m off the plan"}])
+    page.wait_for_timeout(1000)  # three repeat intervals: nothing sounds
+    assert page.evaluate(beeps) == silenced
+    expect(page.locator("#alert-now")).to_contain_text("12.0 m")  # still shown, updated
+    # announced again by the station (risen again after 30 s): it sounds again
+    t1 = "2026-01-01T00:01:00.000Z"
+    page.evaluate(EMIT, ["alert", {**warning, "announced_at": t1, "updated_at": t1}])
+    page.wait_for_function(f"{beeps} > {silenced}")
+    # acknowledged: still shown while active, no more sound
+    page.evaluate(EMIT, ["alert", {**warning, "announced_at": t1, "acknowledged": True}])
+    expect(page.locator("#alert-now")).to_contain_text("(acknowledged)")
+    acked = page.evaluate(beeps)
+    page.wait_for_timeout(1000)
+    assert page.evaluate(beeps) == acked
+    page.evaluate(EMIT, ["alert", {**warning, "acknowledged": True, "active": False,
+                                   "ended_at": t1}])
+    expect(page.locator("#alert-now")).to_be_empty()
+    page.evaluate("usvConsole.setAlertRepeatMs(30000)")
 
 
 def test_a_start_inside_the_ship_is_refused_in_one_sentence(page, station):
