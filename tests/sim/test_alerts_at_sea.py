@@ -29,6 +29,14 @@ async def alerts_of(sim: SimStation, kind: str) -> list[dict]:
     return [a for a in await sim.get("/api/alerts") if a["kind"] == kind]
 
 
+async def _active(sim: SimStation, kind: str) -> list[dict]:
+    return [a for a in await alerts_of(sim, kind) if a["active"]]
+
+
+async def _none_active(sim: SimStation, kind: str) -> bool:
+    return not await _active(sim, kind)
+
+
 def test_own_ship_feed_stopped_warns_within_10_s_and_the_ramp_stays_dead_reckoned(
         tmp_path) -> None:
     doc = moving_scenario()
@@ -127,6 +135,21 @@ def test_the_link_alert_ends_when_the_link_is_back(tmp_path) -> None:
         (back,) = await sim.poll(ended, 20.0, "the link alert to end")
         assert back["id"] == lost[0]["id"] and back["ended_at"] is not None
         assert [a for a in await sim.get("/api/alerts") if a["kind"] != "link_lost"] == []
+
+        async def cut_and_restore() -> list[dict]:
+            radio.enabled = False
+            alerts = await sim.poll(lambda: _active(sim, "link_lost"), 20.0, "link lost")
+            radio.enabled = True
+            await sim.poll(lambda: _none_active(sim, "link_lost"), 20.0, "link back")
+            return alerts
+
+        # lost again within 30 s of its end: the same alert, reopened; long after: a new one
+        await cut_and_restore()
+        assert [a["id"] for a in await alerts_of(sim, "link_lost")] == [lost[0]["id"]]
+        await sim.clock.sleep(40.0)
+        await cut_and_restore()
+        ids = [a["id"] for a in await alerts_of(sim, "link_lost")]
+        assert len(ids) == 2 and lost[0]["id"] in ids
 
     run_station(tmp_path / "data", body)
 

@@ -49,6 +49,7 @@ from usvstation.store.alerts import AlertStore
 from usvstation.store.db import utc_now
 from usvstation.world.model import RampPose, World, compass_to_enu
 from usvstation.world.monitor import (
+    REPEAT_S,
     STATIC_SPEED,
     AlertEvent,
     AlertTracker,
@@ -113,6 +114,7 @@ class MonitorService:
         self.tracker = AlertTracker(self.config)  # the running plan's conditions
         self.ship_tracker = AlertTracker()  # the own ship's, in a run or not
         self.records: dict[AlertKey, Alert] = {}  # every alert that may still change
+        self._ended_t: dict[AlertKey, float] = {}  # when a station alert last ended
         self.last: MonitorAssessment | None = None
         self.last_assessment: Assessment | None = None
         self.last_row: TelemetryRow | None = None
@@ -301,14 +303,19 @@ class MonitorService:
     def record(self, event: AlertEvent, scoped: bool = False) -> Alert | None:
         """The alert record of this event's condition (`scoped`: of the running recovery, else
         of the station), made, changed or ended in place, stored and published; None for the
-        end of a condition that has none."""
+        end of a condition that has none. A condition that comes back reopens its record
+        within the recovery, or for the station's within REPEAT_S of its end."""
         key: AlertKey = (self.episode if scoped else None, event.kind, event.target_id)
         record = self.records.get(key)
         now = utc_now(self.clock)
+        if (not scoped and record is not None and not record["active"] and event.level
+                and self.clock.now() - self._ended_t.get(key, -math.inf) >= REPEAT_S):
+            record = None  # the station's condition back long after it ended: a new alert
         if event.level is None:
             if record is None or not record["active"]:
                 return None
             record.update(active=False, ended_at=now, updated_at=now)
+            self._ended_t[key] = self.clock.now()
         elif record is None:
             record = {
                 "id": uuid.uuid4().hex[:12], "time": now, "level": event.level,
