@@ -324,18 +324,25 @@ class RoutePoint(TypedDict):
     heading_deg: float
 
 
-AlertLevel = Literal["advisory", "caution", "warning"]
+AlertLevel = Literal["advisory", "caution", "warning", "alarm"]
 
 
 class Alert(TypedDict):
+    """One alert: one cause (kind, target) of one run (or of the station: own ship, link),
+    changed in place as its level changes, `active` until its condition ends."""
+
     id: str
-    time: str
+    time: str  # first raised
     level: AlertLevel
     kind: str
     message: str
     target_id: str | None
     run_id: int | None
     acknowledged: bool
+    active: bool
+    updated_at: str  # the last change of level, message or state
+    announced_at: str  # the last time it asked for attention (a new alert or a rise)
+    ended_at: str | None
 
 
 class TargetAssessment(TypedDict):
@@ -345,6 +352,8 @@ class TargetAssessment(TypedDict):
     dcpa_m: float
     tcpa_s: float
     encounter: str
+    known: bool  # the running plan was made around it
+    moving: bool  # it makes way over ground
 
 
 class MonitorAssessment(TypedDict):
@@ -358,6 +367,7 @@ class MonitorAssessment(TypedDict):
     targets: list[TargetAssessment]
     path: list[list[float]]
     levels: dict[str, int]  # "kind" or "kind:target" -> level index in world/monitor.LEVELS
+    margin_m: float  # the hull clearance the plan keeps: half the hull + R_c (eq. 7)
 
 
 class MonitorView(TypedDict):
@@ -400,6 +410,9 @@ class OwnShip(TypedDict):
     course_deg: float | None
     speed: float | None
     age_s: float
+    stale: bool  # no fix for more than world.model.OWN_SHIP_STALE_S: dead-reckoned
+    jump_m: float | None  # the last fix that jumped further than the speed allows
+    jump_age_s: float | None  # how long ago
 
 
 class RampPose(TypedDict):
@@ -413,6 +426,17 @@ class RampPose(TypedDict):
     speed: float
     course_deg: float
     source: Literal["own_ship", "origin"]
+    stale: bool  # from an own ship without a fix for a while: dead-reckoned
+
+
+class ShipShape(TypedDict):
+    """The mother ship as the console draws it, in the ramp frame (the ship-fixed frame)."""
+
+    length: float
+    beam: float | None
+    ramp_width: float
+    outline: list[list[float]] | None  # the hull polygon (scenario/hull.py), None: no shape
+    reference: list[float]  # the ship's position reference (GNSS antenna), [x, y]
 
 
 class Target(TypedDict):
@@ -435,6 +459,10 @@ class Target(TypedDict):
     age_s: float
     speed: float
     course_deg: float
+    heading_deg: float | None
+    length: float | None
+    ais_class: str | None  # "A" or "B" for AIS targets
+    lost: bool  # silent for more than world.model.LOST_AFTER_S
 
 
 class InputSource(TypedDict):
@@ -457,6 +485,7 @@ class WorldSnapshot(TypedDict):
     time: str
     own_ship: OwnShip | None
     ramp: RampPose | None
+    ship: ShipShape | None  # the working scenario's mother ship, if it has one
     targets: list[Target]
     stats: InputStats
 

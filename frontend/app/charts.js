@@ -49,7 +49,22 @@ export class TelemetryCharts {
     this.speed = xyChart(speedEl, { xLabel: 't (s) since start', yLabel: 'speed (m/s)',
       xRange: [0, 60], yRange: [0, 3] });
     this.planned = { hx: [], hy: [], st: [], sv: [] };
+    this.motion = null; // the moving ramp: {vx, vy} (ramp axes, m/s) and its frame
     this.clearReal();
+  }
+
+  /** Under way the plan's speeds are relative to the ramp: so is the real speed drawn, the
+   * speed over ground less the ramp's velocity (`ramp` of GET /api/world, in `frame`). */
+  setRampMotion(ramp, frame) {
+    this.motion = ramp && ramp.source === 'own_ship' ? { vx: ramp.vx, vy: ramp.vy, frame } : null;
+  }
+
+  relativeSpeed(r) {
+    const m = this.motion;
+    if (!m || r.speed == null || r.course_deg == null) return r.speed;
+    const c = (r.course_deg * Math.PI) / 180;
+    const [vx, vy] = m.frame.enuToRamp(r.speed * Math.sin(c), r.speed * Math.cos(c));
+    return Math.hypot(vx - m.vx, vy - m.vy);
   }
 
   /** Planned heading is the leg's heading, so it steps at each waypoint. */
@@ -86,7 +101,7 @@ export class TelemetryCharts {
         this.real.hy.push(r.ramp_heading_deg);
       }
       this.real.st.push(r.boat_time - this.t0);
-      this.real.sv.push(r.speed);
+      this.real.sv.push(this.relativeSpeed(r));
     }
     this.dirty = rows.length > 0 || this.dirty;
   }

@@ -4,6 +4,7 @@ import { clearLocal, loadAlerts, localAlert } from './alerts.js';
 import * as api from './api.js';
 import { showLink } from './instruments.js';
 import { renderMission } from './mission.js';
+import { loadWorld } from './world.js';
 import { onTelemetry, refreshRuns, showRun } from './runs.js';
 import { emit, state, ui } from './store.js';
 import { $, fmt, setPill } from './util.js';
@@ -107,6 +108,7 @@ function handleLive(type, data) {
         onTelemetry(data.telemetry, false);
       }
       loadAlerts();
+      loadWorld();
       if (data.boat) $('boat-state').textContent = boatText(data.boat);
       if (data.run != null && (!state.shown || state.shown.id !== data.run)) {
         showRun(data.run, { live: true });

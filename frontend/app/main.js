@@ -2,7 +2,7 @@
 // each card's controls (one module per concern, one store of state in store.js) and
 // connects to the station's HTTP API and live websocket (/ws/live).
 
-import { bindAlerts } from './alerts.js';
+import { bindAlerts, setRepeatMs, sound } from './alerts.js';
 import * as api from './api.js';
 import { bindCharts, pickingOriginNow, placeOrigin } from './chartpicker.js';
 import { TelemetryCharts } from './charts.js';
@@ -11,6 +11,7 @@ import { connectLive, startPolling } from './live.js';
 import { ConsoleMap, planPositionAt } from './map.js';
 import { bindMissionControls, renderMission } from './mission.js';
 import { bindPlanControls, showPlan, updateStale } from './plan.js';
+import { bindReplans, loadReplans } from './replans.js';
 import { refreshRuns } from './runs.js';
 import { ScenarioEditor } from './scenario.js';
 import { applyStoredTiles, bindSettings } from './settings.js';
@@ -18,6 +19,7 @@ import { state, ui } from './store.js';
 import { bindShortcuts } from './shortcuts.js';
 import { bindTimebar } from './timebar.js';
 import { $, nextTask, showError } from './util.js';
+import { bindWorld, loadWorld, worldSnapshot } from './world.js';
 
 async function linkViser() {
   const link = $('viser-link');
@@ -73,20 +75,27 @@ async function main() {
   bindSettings();
   bindInstruments();
   bindAlerts();
+  bindWorld();
+  bindReplans();
   bindShortcuts();
   bindCharts();
   connectLive();
   await ui.editor.load({ fit: true });
+  await loadWorld();
   startPolling();
   linkViser();
   restore();
+  loadReplans();
 }
 
-// for tests and the curious: the map and the store
+// for tests and the curious: the map, the store, the alert sound
 window.usvConsole = {
   get map() { return ui.map; },
   get state() { return state; },
+  get world() { return worldSnapshot(); },
   planPositionAt,
+  sound,
+  setAlertRepeatMs: setRepeatMs,
 };
 
 main();

@@ -76,14 +76,19 @@ export function updateSeedHint() {
 
 export function updateStale() {
   updateSeedHint();
-  const stale = Boolean(state.plan) && !ui.editor.matches(state.plan.scenario);
+  // a plan from the boat is made from the working scenario it was asked against (its
+  // `basis`), which is what must not have changed
+  const basis = state.plan?.basisScenario ?? state.plan?.scenario;
+  const stale = Boolean(state.plan) && !ui.editor.matches(basis);
   $('plan-stale').hidden = !stale;
   $('upload').disabled = !state.plan || stale;
 }
 
-export async function runPlan() {
+/** Plan the working scenario, or (`fromBoat`) from where the boat is now: its position,
+ * heading and speed, the obstacles where they are at that instant of the run. */
+export async function runPlan({ fromBoat = false } = {}) {
   showError('plan', null);
-  const button = $('plan');
+  const button = $(fromBoat ? 'plan-from-boat' : 'plan');
   button.disabled = true;
   const started = performance.now();
   const progress = $('plan-progress');
@@ -91,6 +96,8 @@ export async function runPlan() {
     await ui.editor.flush();
     const seedText = $('seed').value.trim();
     const body = seedText === '' ? {} : { seed: Number(seedText) };
+    if (fromBoat) body.from_boat = true;
+    const asked = JSON.parse(JSON.stringify(ui.editor.scenario));
     if (!$('planner-label').hidden && $('planner').value) body.planner = $('planner').value;
     const accepted = await api.post('/api/plans', body);
     state.waitingPlan = accepted.id;
@@ -104,6 +111,7 @@ export async function runPlan() {
       await sleep(150);
     }
     if (job.status === 'failed') throw new Error(`no plan: ${job.error}`);
+    if (fromBoat) job.basisScenario = asked;
     showPlan(job);
     refreshOverlayChoices();
   } catch (err) {
@@ -177,7 +185,8 @@ async function overlay(id) {
 }
 
 export function bindPlanControls() {
-  $('plan').addEventListener('click', runPlan);
+  $('plan').addEventListener('click', () => runPlan());
+  $('plan-from-boat').addEventListener('click', () => runPlan({ fromBoat: true }));
   on('units', showSpeedLegend);
   $('overlay-plan').addEventListener('change', (e) => overlay(e.target.value));
   $('overlay-plan').addEventListener('focus', refreshOverlayChoices);

@@ -63,7 +63,13 @@ export async function showRun(id, { live }) {
     renderRuns(runs);
     const run = runs.find((r) => r.id === id);
     if (run && run.plan_id && (!state.plan || state.plan.id !== run.plan_id)) {
-      showPlan(await api.get(`/api/plans/${run.plan_id}`));
+      const job = await api.get(`/api/plans/${run.plan_id}`);
+      // a live run's plan (from the boat, a re-plan) is on the boat: judged against the
+      // working scenario it runs with, not its own start
+      if (state.shown === shown && shown.live && ui.editor.scenario) {
+        job.basisScenario = JSON.parse(JSON.stringify(ui.editor.scenario));
+      }
+      showPlan(job);
     }
   } catch (err) {
     shown.loading = false;

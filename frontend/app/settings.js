@@ -1,5 +1,5 @@
-// Settings kept per browser (localStorage): night mode, large text, speed units,
-// warning sound, the online tile URL and the offline chart; the access token
+// Settings kept per browser (localStorage): the palette (day, dusk, night), large text,
+// speed units, warning sound, the online tile URL and the offline chart; the access token
 // (per tab) is api.js's. Keyboard shortcuts are listed on `?`.
 
 import * as api from './api.js';
@@ -9,11 +9,15 @@ import { $ } from './util.js';
 const KEY = 'usv-station-settings';
 const TILE_KEY = 'usv-station-tile-url';
 const KNOT_MS = 1852 / 3600;
-const DEFAULTS = { night: false, large: false, units: 'ms', sound: true, chart: '' };
+export const PALETTES = ['day', 'dusk', 'night'];
+const DEFAULTS = { palette: 'day', large: false, units: 'ms', sound: true, chart: '' };
 
 function load() {
   try {
-    return { ...DEFAULTS, ...JSON.parse(localStorage.getItem(KEY) ?? '{}') };
+    const stored = JSON.parse(localStorage.getItem(KEY) ?? '{}');
+    if (!stored.palette && stored.night) stored.palette = 'night'; // the earlier night box
+    delete stored.night;
+    return { ...DEFAULTS, ...stored };
   } catch {
     return { ...DEFAULTS };
   }
@@ -31,8 +35,13 @@ export function speedIn(ms) {
 }
 
 function save() {
-  const { night, large, units, sound, chart } = settings;
-  localStorage.setItem(KEY, JSON.stringify({ night, large, units, sound, chart }));
+  const { palette, large, units, sound, chart } = settings;
+  localStorage.setItem(KEY, JSON.stringify({ palette, large, units, sound, chart }));
+}
+
+/** The next palette: day, dusk, night, day... (the `n` shortcut). */
+export function nextPalette() {
+  return PALETTES[(PALETTES.indexOf(settings.palette) + 1) % PALETTES.length];
 }
 
 export function setSetting(name, value) {
@@ -44,15 +53,16 @@ export function setSetting(name, value) {
 /** The page as the settings say: palette, text size, unit labels, the form's state. */
 function apply() {
   const root = document.documentElement;
-  root.classList.toggle('night', settings.night);
+  if (!PALETTES.includes(settings.palette)) settings.palette = 'day';
+  for (const name of PALETTES) root.classList.toggle(name, name !== 'day' && settings.palette === name);
   root.classList.toggle('large', settings.large);
-  $('set-night').checked = settings.night;
+  $('set-palette').value = settings.palette;
   $('set-large').checked = settings.large;
   $('set-units').value = settings.units;
   $('alert-sound').checked = settings.sound;
   document.querySelectorAll('.speed-unit').forEach((el) => { el.textContent = settings.unitLabel; });
   emit('units', settings.units);
-  emit('palette', settings.night);
+  emit('palette', settings.palette);
 }
 
 export function applyStoredTiles() {
@@ -62,7 +72,7 @@ export function applyStoredTiles() {
 
 export function bindSettings() {
   apply();
-  $('set-night').addEventListener('change', (e) => setSetting('night', e.target.checked));
+  $('set-palette').addEventListener('change', (e) => setSetting('palette', e.target.value));
   $('set-large').addEventListener('change', (e) => setSetting('large', e.target.checked));
   $('set-units').addEventListener('change', (e) => setSetting('units', e.target.value));
   $('alert-sound').addEventListener('change', (e) => setSetting('sound', e.target.checked));

@@ -1,9 +1,11 @@
 // Keyboard shortcuts, listed on `?`. HOLD and RESUME act at once; START and ABORT
-// always ask first. None fires while typing in a field.
+// always ask first; y and k accept or reject a proposed re-plan. None fires while typing
+// in a field.
 
 import { command, confirmAbort } from './mission.js';
 import { runPlan } from './plan.js';
-import { setSetting, settings } from './settings.js';
+import { nextPalette, setSetting, settings } from './settings.js';
+import { acceptReplan, rejectReplan } from './replans.js';
 import { $ } from './util.js';
 
 export const SHORTCUTS = [
@@ -12,7 +14,9 @@ export const SHORTCUTS = [
   ['s', 'Start the mission… (asks first)', () => confirmStart()],
   ['a', 'Abort… (asks first)', () => confirmAbort()],
   ['p', 'Plan', () => runPlan()],
-  ['n', 'Night mode on/off', () => setSetting('night', !settings.night)],
+  ['y', 'Accept the proposed re-plan', () => acceptReplan()],
+  ['k', 'Keep the running plan: reject the proposed re-plan', () => rejectReplan()],
+  ['n', 'Palette: day, dusk, night', () => setSetting('palette', nextPalette())],
   ['l', 'Large text on/off', () => setSetting('large', !settings.large)],
   ['u', 'Speed in m/s or knots', () => setSetting('units', settings.units === 'kn' ? 'ms' : 'kn')],
   ['m', 'Centre the map on the boat', () => $('map').dispatchEvent(new CustomEvent('centre-boat'))],

@@ -8,6 +8,7 @@ export const state = {
   mission: null, // latest mission record
   shown: null, // run on the map: {id, live, rows, t0, loading, buffer}
   telemetry: null, // latest telemetry row
+  monitor: null, // the plan monitor's latest assessment of the running plan
   displayT: 0,
   follow: true,
   playing: null,

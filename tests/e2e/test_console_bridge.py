@@ -100,21 +100,27 @@ def test_instruments_grey_and_the_link_alert_when_the_link_is_cut(browser, boat_
         lost = [a for a in stored if a["kind"] == "link_lost"]
         assert len(lost) == 1 and lost[0]["level"] == "warning"
         assert set(lost[0]) == {"id", "time", "level", "kind", "message", "target_id", "run_id",
-                                "acknowledged"}
+                                "acknowledged", "active", "updated_at", "announced_at",
+                                "ended_at"}
+        assert lost[0]["active"] is True
         page.screenshot(path=artifacts / "bridge-link-lost.png")
-        # acknowledge from the console: the station records it
+        # acknowledge from the console: the station records it; still active, so still shown
         page.click("#alerts-history")
         page.click(f"button[aria-label='acknowledge: {lost[0]['message']}']")
-        expect(page.locator("#alert-now")).to_be_empty()
+        expect(page.locator("#alert-now")).to_contain_text("(acknowledged)")
         deadline = time.monotonic() + 10  # the console's POST .../ack lands
         while [a["acknowledged"] for a in station.client.get("/api/alerts").json()
                if a["kind"] == "link_lost"] != [True]:
             assert time.monotonic() < deadline, "the acknowledgement was not stored"
             time.sleep(0.1)
-        # the boat back: fresh values, not grey
+        # the boat back: fresh values, not grey, and the link alert ended (the same one)
         sim.send_signal(signal.SIGCONT)
         expect(page.locator("[data-instrument=sog]")).not_to_have_class(
             re.compile(r"\bstale\b"), timeout=10_000)
+        expect(page.locator("#alert-now")).to_be_empty(timeout=10_000)
+        (ended,) = [a for a in station.client.get("/api/alerts").json()
+                    if a["kind"] == "link_lost"]
+        assert ended["id"] == lost[0]["id"] and ended["active"] is False
         print(f"greyed {greyed:.1f} s and alerted {alerted:.1f} s after the cut (loaded machine)")
     finally:
         context.close()
@@ -248,12 +254,12 @@ PALETTE_CHECK = """() => {
 def test_night_mode_stays_within_its_palette(page, chart_station, artifacts):
     st = chart_station
     open_console(page, st)
-    page.check("#set-night")
+    page.select_option("#set-palette", "night")
     page.click("#alerts-history")
     found = page.evaluate(PALETTE_CHECK)
     # the brightest colour of the night palette (console.css) is #e03c1e
     brightest = 0.2126 * ((224 / 255 + 0.055) / 1.055) ** 2.4 + 0.7152 * (
-        (60 / 255 + 0.055) / 1.055) ** 2.4 + 0.0722 * (30 / 255 / 12.92)
+        (60 / 255 + 0.055) / 1.055) ** 2.4 + 0.0722 * ((30 / 255 + 0.055) / 1.055) ** 2.4
     too_bright = [c for c in found["colours"] if c["L"] > brightest + 1e-6]
     not_red = [c for c in found["colours"] if c["g"] > c["r"] or c["b"] > c["r"]]
     assert too_bright == [], json.dumps(too_bright[:10])
@@ -264,7 +270,7 @@ def test_night_mode_stays_within_its_palette(page, chart_station, artifacts):
     # kept per browser, applied before the first paint
     page.reload()
     assert page.evaluate("document.documentElement.classList.contains('night')")
-    page.uncheck("#set-night")
+    page.select_option("#set-palette", "day")
     assert not page.evaluate("document.documentElement.classList.contains('night')")
 
 
@@ -355,7 +361,7 @@ def test_replay_of_a_stored_run_at_20x(browser, chart_station, artifacts):
         # console's frame budget is measured by tests/e2e/test_console_perf.py's printout
         print(f"replay at 20x: longest task {longest:.0f} ms")
         page.screenshot(path=artifacts / "bridge-replay-end.png")
-        page.check("#set-night")  # the README's night screenshot: the replayed run
+        page.select_option("#set-palette", "night")  # the README's night screenshot
         page.wait_for_timeout(700)
         page.screenshot(path=artifacts / "console-night.png")
     finally:

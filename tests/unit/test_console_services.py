@@ -15,7 +15,7 @@ from usvstation.services.plans import outdated_by, scenario_digest
 from usvstation.world.monitor import AlertEvent
 
 
-def test_link_lost_raises_one_warning_and_one_advisory_when_back():
+def test_link_lost_raises_one_warning_that_ends_when_the_link_is_back():
     raised: list[AlertEvent] = []
     alerts = LinkAlerts(raised.append)
     alerts.on_link_event(LinkDown("no frame from the boat for 3.0 s"))
@@ -25,7 +25,7 @@ def test_link_lost_raises_one_warning_and_one_advisory_when_back():
     assert raised == [
         AlertEvent("warning", "link_lost",
                    "link to the boat lost: no frame from the boat for 3.0 s"),
-        AlertEvent("advisory", "link_restored", "link to the boat restored")]
+        AlertEvent(None, "link_lost", "link to the boat restored", announce=False, rose=False)]
 
 
 def test_outdated_by_names_the_changed_fields_of_the_same_scenario():
@@ -50,6 +50,26 @@ def test_a_plan_made_from_the_working_scenario_stays_uploadable_until_it_changes
     edited = case1.model_copy(update={"vessel": case1.vessel.model_copy(
         update={"length": 2.0})})
     assert outdated_by(job, edited) == ["vessel"]
+
+
+def test_plan_from_a_boat_inside_the_ship_is_refused_in_one_sentence():
+    import pytest
+
+    from usvstation.scenario import parse_scenario
+    from usvstation.services.errors import Conflict
+    from usvstation.services.plans import scenario_from_boat
+
+    doc = load_scenario("case1").model_dump(mode="json")
+    doc["mother_ship"] = {"speed": 0.0, "course_deg": 270.0, "length": 40.0, "beam": 10.0,
+                          "ramp_width": 3.0}
+    row = {"x": -10.0, "y": 1.0, "ramp_heading_deg": 0.0, "speed": 0.5, "boat_time": 3.0,
+           "run": None}
+    with pytest.raises(Conflict) as refused:
+        scenario_from_boat(parse_scenario(doc), row, None)
+    assert str(refused.value) == (
+        "cannot plan from the boat: start: (-10, 1) lies inside the mother ship's hull (x in "
+        "[-40, 0], |y| <= 5 m of the ramp frame), behind the ramp; a recovery starts in the "
+        "water")
 
 
 def _mbtiles(path, tiles):

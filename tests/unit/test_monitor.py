@@ -9,6 +9,7 @@ from hypothesis import assume, given
 from hypothesis import strategies as st
 
 from usvstation.world.monitor import (
+    REPEAT_S,
     AlertTracker,
     Assessment,
     BoatState,
@@ -130,22 +131,55 @@ def clearance(value: float, tid: str = "ais:9", tcpa: float = -1.0) -> Assessmen
                       [TargetAssessment(tid, value, 5.0, 50.0, tcpa, "none")])
 
 
-def test_clearance_wobbling_at_the_threshold_warns_once() -> None:
-    # advisory below 2 x 1.6 m, caution below the plan's margin 1.6 m, warning below 1.0 m
+def test_clearance_wobbling_at_the_threshold_is_one_alert_announced_once() -> None:
+    # advisory below 2 x 1.6 m, caution below the plan's margin 1.6 m, warning below 1.0 m,
+    # alarm at contact; every change of level is an event of the same condition
     tracker = AlertTracker(MonitorConfig(clearance_margin_m=1.6, clearance_warning_m=1.0,
                                          clearance_hysteresis_m=0.5))
-    raised = []
-    for value in (10.0, 3.0, 1.5, 0.9, 1.1, 0.9, 1.4, 0.9, 1.6, 0.9):
-        raised += [(e.kind, e.level) for e in tracker.update(clearance(value))]
-    assert raised == [("clearance", "advisory"), ("clearance", "caution"),
-                      ("clearance", "warning"), ("clearance", "warning")]
-    # the second warning came after the value cleared the band (1.6 > 1.0 + 0.5)
+    changes = []
+    for t, value in enumerate((10.0, 3.0, 1.5, 0.9, 1.1, 0.9, 1.4, 0.9, 1.6, 0.9)):
+        changes += [(e.level, e.announce) for e in tracker.update(clearance(value), float(t))
+                    if e.kind == "clearance"]
+    assert changes == [("advisory", True), ("caution", True), ("warning", True),
+                       # 1.6 m clears the band (1.0 + 0.5): down to caution, and the warning
+                       # again 1 s later is not announced again (within REPEAT_S)
+                       ("caution", False), ("warning", False)]
+    assert tracker.levels == {("clearance", "ais:9"): 2}
+    # 30 s after the last announcement the same warning asks for attention again
+    tracker.update(clearance(1.6), 40.0)
+    (again,) = [e for e in tracker.update(clearance(0.9), 41.0) if e.kind == "clearance"]
+    assert (again.level, again.announce) == ("warning", True)
+
+
+def test_a_condition_ends_when_it_clears_and_when_its_target_is_gone() -> None:
+    tracker = AlertTracker()
+    tracker.update(clearance(1.2), 0.0)
+    (end,) = [e for e in tracker.update(clearance(5.0), 1.0) if e.kind == "clearance"]
+    assert (end.level, end.target_id, end.announce) == (None, "ais:9", False)
+    tracker.update(clearance(1.2), 2.0)
+    empty = Assessment(0.0, 0.0, 0.0, np.zeros((1, 3)), [])
+    (gone,) = [e for e in tracker.update(empty, 3.0) if e.target_id == "ais:9"]
+    assert (gone.level, gone.message) == (None, "ais:9: no longer tracked")
+    assert tracker.levels == {}
+
+
+@given(st.lists(st.floats(-5.0, 10.0), min_size=1, max_size=60))
+def test_one_announcement_per_level_within_the_repeat_time(values: list[float]) -> None:
+    """Whatever the clearance does within REPEAT_S, each level is announced at most once."""
+    tracker = AlertTracker()
+    announced = [e.level for i, v in enumerate(values)
+                 for e in tracker.update(clearance(v), i * REPEAT_S / 100) if e.announce]
+    assert len(announced) == len(set(announced))
 
 
 def test_alert_messages_name_the_target_and_contact() -> None:
     (e,) = [e for e in AlertTracker().update(clearance(-0.4)) if e.kind == "clearance"]
-    assert e.level == "warning" and e.target_id == "ais:9"
+    assert e.level == "alarm" and e.target_id == "ais:9"
     assert e.message == "ais:9: predicted clearance contact in 5 s (plan margin 1.6 m)"
+    now = TargetAssessment("ais:9", 2.4, 0.0, 50.0, -1.0, "none")
+    (e,) = [e for e in AlertTracker().update(Assessment(0.0, 0.0, 0.0, np.zeros((1, 3)), [now]))
+            if e.kind == "clearance"]
+    assert e.message == "ais:9: predicted clearance 2.4 m now (plan margin 1.6 m)"
 
 
 def test_slip_and_cross_track_levels() -> None:
@@ -156,12 +190,18 @@ def test_slip_and_cross_track_levels() -> None:
     assert tracker.update(a) == []
 
 
-def test_collision_course_warns_only_for_a_new_target_the_plan_does_not_clear() -> None:
+def test_collision_course_only_for_a_new_moving_target() -> None:
     t_plan_clear = TargetAssessment("ais:5", 10.0, 5.0, 0.5, 20.0, "crossing-give-way")
     t_plan_hits = TargetAssessment("ais:6", 1.2, 5.0, 0.5, 20.0, "crossing-give-way")
     t_known = TargetAssessment("manual:0", 1.2, 5.0, 0.5, 20.0, "head-on", known=True)
-    a = Assessment(0.0, 0.0, 0.0, np.zeros((1, 3)), [t_plan_clear, t_plan_hits, t_known])
+    t_buoy = TargetAssessment("arpa:1", 1.2, 5.0, 0.5, 20.0, "head-on", moving=False)
+    a = Assessment(0.0, 0.0, 0.0, np.zeros((1, 3)), [t_plan_clear, t_plan_hits, t_known,
+                                                      t_buoy])
     got = {(e.kind, e.target_id, e.level) for e in AlertTracker().update(a)}
     assert ("collision_course", "ais:5", "caution") in got
     assert ("collision_course", "ais:6", "warning") in got
-    assert ("collision_course", "manual:0", "caution") in got
+    # the plan's own obstacles and targets still over ground: their predicted clearance only
+    assert {e for e in got if e[0] == "collision_course"} == {
+        ("collision_course", "ais:5", "caution"), ("collision_course", "ais:6", "warning")}
+    assert ("clearance", "manual:0", "caution") in got and ("clearance", "arpa:1", "caution") \
+        in got

@@ -109,25 +109,27 @@ def test_ais_type_1_and_18() -> None:
     a = one("AIS 1: 211000001, 30.51 N 122.01 E, 10.0 kn, 123.4, hdg 120")
     assert a == TrackReport(mmsi=211000001, lat=pytest.approx(30.51), lon=pytest.approx(122.01),
                             speed=pytest.approx(10.0 * KNOT), course_deg=pytest.approx(123.4),
-                            heading_deg=120.0)
+                            heading_deg=120.0, ais_class="A")
     b = one("AIS 18: 211000002, 30.49 N 121.99 E, 3.2 kn, 300.0")
-    assert (b.mmsi, b.speed, b.course_deg, b.heading_deg) == (
-        211000002, pytest.approx(3.2 * KNOT), pytest.approx(300.0), None)
+    assert (b.mmsi, b.speed, b.course_deg, b.heading_deg, b.ais_class) == (
+        211000002, pytest.approx(3.2 * KNOT), pytest.approx(300.0), None, "B")
 
 
 def test_ais_type_5_two_fragments() -> None:
     reports, dec = decode("AIS 5 in two fragments: 211000001 ALPHA 40 x 8")
-    assert reports == [TrackReport(mmsi=211000001, name="ALPHA", length=40.0, beam=8.0)]
+    assert reports == [TrackReport(mmsi=211000001, name="ALPHA", length=40.0, beam=8.0,
+                                   ais_class="A")]
     assert dec.stats.sentences == 2 and dec.stats.bad == 0
 
 
 def test_ais_type_24_parts_and_19() -> None:
-    assert one("AIS 24A: 211000002 BRAVO") == TrackReport(mmsi=211000002, name="BRAVO")
+    assert one("AIS 24A: 211000002 BRAVO") == TrackReport(mmsi=211000002, name="BRAVO",
+                                                          ais_class="B")
     assert one("AIS 24B: 211000002 12 x 4") == TrackReport(mmsi=211000002, length=12.0,
-                                                            beam=4.0)
+                                                            beam=4.0, ais_class="B")
     c = one("AIS 19: 211000003 CHARLIE, 30.5 N 122.02 E, 1.0 kn, 0.0, 20 x 6")
-    assert (c.name, c.length, c.beam, c.lat, c.lon) == (
-        "CHARLIE", 20.0, 6.0, pytest.approx(30.5), pytest.approx(122.02))
+    assert (c.name, c.length, c.beam, c.lat, c.lon, c.ais_class) == (
+        "CHARLIE", 20.0, 6.0, pytest.approx(30.5), pytest.approx(122.02), "B")
 
 
 def test_ais_position_not_available_gives_nothing() -> None:

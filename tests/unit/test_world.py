@@ -10,7 +10,14 @@ from hypothesis import strategies as st
 
 from usvstation.geo import RampFrame
 from usvstation.scenario.ships import LeverArm
-from usvstation.world.model import World, WorldConfig, compass_to_enu, offset_geodetic
+from usvstation.world.model import (
+    LOST_AFTER_S,
+    OWN_SHIP_STALE_S,
+    World,
+    WorldConfig,
+    compass_to_enu,
+    offset_geodetic,
+)
 
 LAT, LON = 30.5, 122.0
 
@@ -116,3 +123,60 @@ def test_prediction_moves_by_speed_times_time(speed: float, course: float, dt: f
     assert math.hypot(t["x"], t["y"]) == pytest.approx(speed * dt, abs=1e-6)
     ve, vn = compass_to_enu(speed, course)
     assert (t["vy"], t["vx"]) == pytest.approx((-ve, vn), abs=1e-9)
+
+
+def test_a_silent_own_ship_stays_dead_reckoned_and_stale_never_the_origin() -> None:
+    anchor = RampFrame(0.0, 0.0, 90.0)  # the scenario's origin, far away
+    world = World(anchor=anchor, lever_arm=LeverArm(forward=0.0))
+    world.update_own(0.0, lat=LAT, lon=LON, heading_deg=270.0, course_deg=270.0, speed=1.0)
+    assert not world.own.stale(OWN_SHIP_STALE_S)
+    for t in (OWN_SHIP_STALE_S + 0.1, 120.0, 3600.0):
+        pose = world.ramp(t)
+        assert world.own.stale(t) and pose.moving
+        x, _ = RampFrame(LAT, LON, 90.0).to_ramp(pose.lat, pose.lon)  # x east
+        assert float(x) == pytest.approx(-t, abs=1e-2 * t)  # still sailing west at 1 m/s
+
+
+@pytest.mark.parametrize(("east", "dt", "jumps"), [
+    (1.0, 1.0, False),  # on its way at 1 m/s
+    (60.0, 1.0, True),  # 60 m in a second at 1 m/s: a wrong fix
+    (60.0, 60.0, False),  # a minute without a fix, then where it should be
+    (11.0, 0.5, True), (10.5, 0.0, True)])
+def test_a_fix_further_than_the_speed_allows_is_a_jump(east: float, dt: float,
+                                                       jumps: bool) -> None:
+    world = World()
+    world.update_own(0.0, lat=LAT, lon=LON, course_deg=90.0, speed=1.0)
+    world.update_own(dt, lat=LAT, lon=LON)  # a fix on the spot is no jump
+    assert world.own.t_jump is None
+    lat, lon = offset_geodetic(LAT, LON, east, 0.0)
+    world.update_own(2 * dt, lat=lat, lon=lon)
+    assert (world.own.t_jump is not None) is jumps
+    if jumps:
+        assert world.own.jump_m == pytest.approx(east, abs=1e-3)
+        assert world.own.jump_allowed_m == pytest.approx(10.0 + 1.5 * dt)
+
+
+def test_targets_carry_class_heading_and_are_lost_after_silence() -> None:
+    world = World(anchor=RampFrame(LAT, LON, 90.0))
+    lat, lon = offset_geodetic(LAT, LON, 50.0, 0.0)
+    world.update_track(0.0, "ais:1", "ais", mmsi=1, lat=lat, lon=lon, speed=2.0,
+                       course_deg=0.0, heading_deg=5.0, ais_class="B", length=12.0)
+    (t,) = world.targets(LOST_AFTER_S)
+    assert (t["ais_class"], t["heading_deg"], t["length"], t["lost"]) == ("B", 5.0, 12.0, False)
+    (t,) = world.targets(LOST_AFTER_S + 0.1)
+    assert t["lost"]
+
+
+@pytest.mark.parametrize(("arm", "reference"), [
+    (LeverArm(forward=-20.0), (-20.0, 0.0)),  # a stern ramp 20 m aft: the antenna forward
+    (LeverArm(forward=-20.0, starboard=5.0), (-20.0, -5.0)),  # +y of a stern ramp: starboard
+    (LeverArm(forward=10.0, starboard=0.0, ramp_bearing_offset_deg=0.0), (-10.0, 0.0))])
+def test_the_ships_reference_in_the_ramp_frame_agrees_with_the_ramp_pose(arm, reference) -> None:
+    from usvstation.world.model import reference_in_ramp
+
+    assert reference_in_ramp(arm) == pytest.approx(reference, abs=1e-9)
+    world = World(lever_arm=arm)
+    world.update_own(0.0, lat=LAT, lon=LON, heading_deg=33.0)
+    pose = world.ramp(0.0)
+    x, y = pose.frame.to_ramp(LAT, LON)  # the antenna seen from the ramp
+    assert (float(x), float(y)) == pytest.approx(reference, abs=1e-3)

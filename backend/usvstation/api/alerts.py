@@ -8,7 +8,7 @@ import io
 import json
 from typing import Annotated, Literal
 
-from fastapi import APIRouter, Depends, HTTPException, Path, Query, Request, Response
+from fastapi import APIRouter, Depends, Path, Query, Request, Response
 
 from usvstation.api.auth import require_token
 from usvstation.records import Alert, MonitorView, Replan
@@ -25,8 +25,10 @@ async def list_alerts(
     run: Annotated[int | None, Query(ge=1, le=2**63 - 1)] = None,
     limit: Annotated[int, Query(ge=1, le=100_000)] = 1000,
 ) -> list[Alert]:
-    """Alerts, newest first: {id, time, level (advisory|caution|warning), kind, message,
-    target_id, run_id, acknowledged}; of one run with `run`."""
+    """Alerts, newest first: {id, time, level (advisory|caution|warning|alarm), kind,
+    message, target_id, run_id, acknowledged, active, updated_at, announced_at, ended_at};
+    of one run with `run`. One alert per cause (kind, target) of a recovery, changed in
+    place; `active` until its condition ends."""
     station = request.app.state.station
     return await asyncio.to_thread(station.alerts.alerts, run, limit)
 
@@ -60,13 +62,9 @@ async def export_alerts(
 @router.post("/api/alerts/{alert_id}/ack", dependencies=Auth,
              responses={404: {"description": "no such alert"}})
 async def ack_alert(request: Request, alert_id: Id) -> Alert:
-    """Acknowledge an alert (idempotent); the acknowledged record goes out on the websocket."""
-    station = request.app.state.station
-    record = await asyncio.to_thread(station.alerts.acknowledge, alert_id)
-    if record is None:
-        raise HTTPException(404, detail=f"no alert {alert_id!r}")
-    station.hub.publish("alert", record)
-    return record
+    """Acknowledge an alert (idempotent); the acknowledged record goes out on the websocket.
+    Acknowledging does not end it: it stays active while its condition holds."""
+    return await request.app.state.station.monitor.acknowledge(alert_id)
 
 
 @router.get("/api/monitor")

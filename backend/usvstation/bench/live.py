@@ -251,7 +251,8 @@ def run_episode(scenario: Scenario, plan: dict[str, Any], traffic: Traffic, poli
             targets = [TargetState("sim:1", tx, ty, tvx, tvy, traffic.radius)]
             a = assess(waypoints, bs, targets, v.length, config)
             for event in tracker.update(a):
-                if decide("auto", event.level, event.kind, state, tel.time_s) != "apply":
+                if not event.rose or decide("auto", event.level, event.kind, state,
+                                            tel.time_s) != "apply":
                     continue
                 state = ReplanState(last_t=tel.time_s)
                 watch = Stopwatch()

@@ -1,9 +1,13 @@
-"""Link alerts, from the link's own events: the boat link lost (warning) and back (advisory),
-a go-around (warning: the boat missed an approach gate and stands by for a new approach) and
-the boat's over-capacity notice (warning: the current exceeds what it can hold).
+"""Link alerts, from the link's own events: the boat link lost (a warning, ended when the link
+is back), a go-around (a warning: the boat missed an approach gate and stands by for a new
+approach; ended when it flies its mission again or the mission ends) and the boat's
+over-capacity notice (a warning: the current exceeds what it can hold; ended when it can again).
 
-They are raised through the plan monitor's `raise_alert`, so they are stored with their run
-(store/alerts.py), exported and pushed to the live hub like every other alert.
+They go through the plan monitor's `raise_alert`, so they are stored with the run they
+happened in (store/alerts.py), exported and pushed to the live hub like every other alert:
+one alert while the link is down, ended (not a second alert) when it is up again. An alert a
+previous station process left active is ended when this one starts (services/monitor.py), so
+a restart never leaves a "link lost" open beside a link that is up.
 """
 
 from __future__ import annotations
@@ -18,8 +22,8 @@ GO_AROUND_TEXT = "go-around:"  # the boat's STATUSTEXT giving the reason
 
 
 class LinkAlerts:
-    """A BoatLink listener: one warning when the link goes down, one advisory when it is back;
-    one warning per go-around and per over-capacity notice the boat reports."""
+    """A BoatLink listener: one alert per cause (link lost, go-around, over capacity), raised
+    when the cause appears and ended when it clears."""
 
     def __init__(self, raise_alert: Callable[[AlertEvent], Any]) -> None:
         self.raise_alert = raise_alert
@@ -36,7 +40,8 @@ class LinkAlerts:
                                             f"link to the boat lost: {ev.reason}"))
         elif isinstance(ev, LinkUp) and self.link_lost:
             self.link_lost = False
-            self.raise_alert(AlertEvent("advisory", "link_restored", "link to the boat restored"))
+            self.raise_alert(AlertEvent(None, "link_lost", "link to the boat restored",
+                                        announce=False, rose=False))
         elif isinstance(ev, StatusTextReceived) and ev.text.startswith(GO_AROUND_TEXT) and \
                 "standby" not in ev.text:
             self.go_around_reason = ev.text.removeprefix(GO_AROUND_TEXT).strip()
@@ -51,7 +56,13 @@ class LinkAlerts:
             self.raise_alert(AlertEvent(
                 "warning", "go_around", f"the boat went around{why}: it flies to its standby "
                 "point; RESUME there for a new approach"))
+        elif previous == "GO_AROUND" and state not in ("GO_AROUND", "HOLD", "FAILSAFE"):
+            self.raise_alert(AlertEvent(None, "go_around", f"the boat is {state}",
+                                        announce=False, rose=False))
         if ev.report.over_capacity and not self.over_capacity:
             self.raise_alert(AlertEvent("warning", "over_capacity",
                                         "the current exceeds what the boat can hold: drifting"))
+        elif self.over_capacity and not ev.report.over_capacity:
+            self.raise_alert(AlertEvent(None, "over_capacity", "the boat holds its position "
+                                        "again", announce=False, rose=False))
         self.over_capacity = ev.report.over_capacity

@@ -48,7 +48,7 @@ from usvstation.records import (
     TelemetryRow,
 )
 from usvstation.runtime import tune_allocator
-from usvstation.scenario import Scenario, scenario_at
+from usvstation.scenario import Scenario, ScenarioError, scenario_at
 from usvstation.services.errors import Conflict, QueueFull
 from usvstation.services.hub import LiveHub
 from usvstation.store.db import Store, utc_now
@@ -124,8 +124,11 @@ def scenario_from_boat(scenario: Scenario, row: TelemetryRow | None,
         raise Conflict("from_boat: no telemetry with a ramp-frame position yet "
                          "(is the boat connected and the scenario's origin set?)")
     t = row["boat_time"] - run_t0 if row.get("run") is not None and run_t0 is not None else 0.0
-    return scenario_at(scenario, row["x"], row["y"], row["ramp_heading_deg"], row["speed"],
-                       max(float(t), 0.0))
+    try:
+        return scenario_at(scenario, row["x"], row["y"], row["ramp_heading_deg"], row["speed"],
+                           max(float(t), 0.0))
+    except ScenarioError as exc:  # the boat where no plan can start: inside the ship, ...
+        raise Conflict(f"cannot plan from the boat: {exc}") from None
 
 
 def scenario_digest(scenario: Scenario) -> dict[str, str]:

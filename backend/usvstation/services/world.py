@@ -3,7 +3,9 @@
 Lines from every `--nmea` source are decoded on the event loop (a sentence takes tens of
 microseconds) and merged into the pure world model (world/model.py); at most
 `PUBLISH_HZ` times a second a changed world goes out on the websocket as
-{"type": "world", "data": <the /api/world body>}. Silent tracks age out.
+{"type": "world", "data": <the /api/world body>}, and at least once a second while the
+own ship is stale (its age and the dead-reckoned ramp move on). Silent tracks age out.
+`tick_listeners` are called at every tick, changed or not (the own-ship alerts).
 
 The ramp pose goes to `pose_listeners` `RAMP_POSE_HZ` times a second (the boat link's
 USV_RAMP_POSE stream, link/protocol.py `set_ramp_pose`): the pose of the latest own-ship
@@ -23,15 +25,16 @@ from typing import Any
 from usvstation.clock import REAL_CLOCK, Clock
 from usvstation.geo import RampFrame
 from usvstation.link.protocol import RampPoseSample
-from usvstation.records import InputSource, Target, WorldSnapshot
+from usvstation.records import InputSource, ShipShape, Target, WorldSnapshot
 from usvstation.scenario import Scenario
+from usvstation.scenario.hull import hull_polygon
 from usvstation.scenario.ships import LeverArm
 from usvstation.services.hub import LiveHub
 from usvstation.shipinputs.decode import SentenceDecoder, apply_reports
 from usvstation.shipinputs.readers import Source, open_udp, parse_source, run_stream_source
 from usvstation.sim.sea import SimulatedSea, UdpSender
 from usvstation.store.db import utc_now
-from usvstation.world.model import World, enu_to_compass
+from usvstation.world.model import World, enu_to_compass, reference_in_ramp
 
 log = logging.getLogger(__name__)
 PUBLISH_HZ = 2.0
@@ -74,7 +77,10 @@ class WorldService:
         self._transports: list[asyncio.DatagramTransport] = []
         self._tasks: set[asyncio.Task] = set()
         self.listeners: list[Callable[[World, float], None]] = []
+        self.tick_listeners: list[Callable[[World, float], None]] = []
+        self._published_at = -1e9
         self.pose_listeners: list[Callable[[RampPoseSample | None], None]] = []
+        self.ship: ShipShape | None = None
         self._pose_streamed = False
 
     # --- lifecycle -------------------------------------------------------------------------
@@ -89,7 +95,7 @@ class WorldService:
     async def use_scenario(self, scenario: Scenario) -> None:
         """A new working scenario; with the simulated boat, its sea (if any) starts afresh."""
         if self.simulate:
-            await self._stop_sea()
+            await self.stop_sea()
             self.world = World(config=self.world.config)
         self.set_scenario(scenario)
         if self.simulate and scenario.origin is not None and (scenario.mother_ship is not None
@@ -110,7 +116,8 @@ class WorldService:
         assert self._sea_sender is not None
         return self._sea_sender
 
-    async def _stop_sea(self) -> None:
+    async def stop_sea(self) -> None:
+        """Stop the simulated sea (its sentences stop: the own ship goes silent)."""
         if self._sea_stop is not None:
             self._sea_stop.set()
             await self.clock.sleep(0)
@@ -133,7 +140,7 @@ class WorldService:
         return None
 
     async def stop(self) -> None:
-        await self._stop_sea()
+        await self.stop_sea()
         if self._sea_sender is not None:
             self._sea_sender.close()
         for transport in self._transports:
@@ -154,6 +161,11 @@ class WorldService:
         """Anchor the ramp at the scenario origin; its obstacles become `manual` tracks."""
         ms = scenario.mother_ship
         self.world.lever_arm = ms.lever_arm if ms is not None else LeverArm()
+        ring = hull_polygon(ms)
+        self.ship = None if ms is None else {
+            "length": ms.length, "beam": ms.beam, "ramp_width": ms.ramp_width,
+            "outline": None if ring is None else [[x, y] for x, y in ring],
+            "reference": [round(v, 3) for v in reference_in_ramp(ms.lever_arm)]}
         if scenario.origin is None:
             return
         o = scenario.origin
@@ -172,14 +184,15 @@ class WorldService:
             await self.clock.sleep(1.0 / PUBLISH_HZ)
             t = self.clock.now()
             self.world.expire(t)
-            if self.world.version != self._published:
-                self._published = self.world.version
+            changed = self.world.version != self._published
+            if changed or (self.world.own.stale(t) and t - self._published_at >= 1.0):
+                self._published, self._published_at = self.world.version, t
                 self.hub.publish("world", self.snapshot(t))
-                for listener in self.listeners:
-                    try:
-                        listener(self.world, t)
-                    except Exception:  # a listener's fault never stops the world
-                        log.exception("world listener failed")
+            for listener in (self.listeners if changed else []) + self.tick_listeners:
+                try:
+                    listener(self.world, t)
+                except Exception:  # a listener's fault never stops the world
+                    log.exception("world listener failed")
 
     async def _pose_ticker(self) -> None:
         while True:
@@ -224,7 +237,9 @@ class WorldService:
             lat, lon = own.position_at(t)
             own_out = {"lat": lat, "lon": lon, "heading_deg": own.heading_deg,
                        "course_deg": own.course_deg, "speed": own.speed,
-                       "age_s": round(t - (own.t_fix or t), 3)}
+                       "age_s": round(own.age(t) or 0.0, 3), "stale": own.stale(t),
+                       "jump_m": None if own.jump_m is None else round(own.jump_m, 1),
+                       "jump_age_s": None if own.t_jump is None else round(t - own.t_jump, 3)}
         pose = self.world.ramp(t)
         ramp_out = None
         if pose is not None:
@@ -233,11 +248,12 @@ class WorldService:
             ramp_out = {"lat": pose.lat, "lon": pose.lon,
                         "ramp_bearing_deg": round(pose.ramp_bearing_deg, 3),
                         "vx": float(vx), "vy": float(vy), "speed": speed, "course_deg": course,
-                        "source": "own_ship" if pose.moving else "origin"}
+                        "source": "own_ship" if pose.moving else "origin",
+                        "stale": pose.moving and own.stale(t)}
         targets = [_rounded(v) for v in self.world.targets(t)]
         s = self.decoder.stats
         return {"time": utc_now(self.clock), "own_ship": own_out, "ramp": ramp_out,
-                "targets": targets,
+                "ship": self.ship, "targets": targets,
                 "stats": {"sentences": s.sentences, "bad": s.bad, "ignored": s.ignored,
                           "bad_reasons": dict(s.reasons),
                           "sources": list(self.source_state.values())}}

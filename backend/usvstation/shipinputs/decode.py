@@ -34,6 +34,7 @@ class TrackReport(MotionReport):
     name: str | None = None
     length: float | None = None
     beam: float | None = None
+    ais_class: str | None = None  # "A" (types 1-3, 5) or "B" (18, 19, 24)
 
 
 @dataclass(frozen=True)
@@ -283,7 +284,9 @@ def _ais_report(ais: object, own: bool) -> list[Report]:
         return [OwnShipReport(**pos)]
     if not pos and not static:
         return []
-    return [TrackReport(mmsi=int(mmsi), **pos, **static)]  # type: ignore[arg-type]
+    ais_class = "B" if kind in (18, 19, 24) else "A" if kind in (1, 2, 3, 5) else None
+    return [TrackReport(mmsi=int(mmsi), **pos, **static,  # type: ignore[arg-type]
+                        ais_class=ais_class)]
 
 
 def apply_reports(world: World, t: float, reports: list[Report]) -> bool:
@@ -297,7 +300,7 @@ def apply_reports(world: World, t: float, reports: list[Report]) -> bool:
             world.update_track(t, f"ais:{r.mmsi}", "ais", mmsi=r.mmsi, lat=r.lat, lon=r.lon,
                                speed=r.speed, course_deg=r.course_deg,
                                heading_deg=r.heading_deg, name=r.name, length=r.length,
-                               beam=r.beam)
+                               beam=r.beam, ais_class=r.ais_class)
         elif isinstance(r, RadarReport):
             if world.update_radar_target(t, r.number, r.range_m, r.bearing_deg, r.speed,
                                          r.course_deg, relative=r.relative,

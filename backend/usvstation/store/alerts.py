@@ -1,8 +1,10 @@
 """Alerts and re-plans, kept with their run in the station's database (call from threads).
 
 Two tables of their own, created next to store/db.py's schema on the same file:
-`alerts` {id, time, level, kind, message, target_id, run_id, acknowledged} and `replans`
-{id, created_at, run_id, alert_id, plan_id, policy, state, error, latency_ms, mission_id}.
+`alerts` {id, time, level, kind, message, target_id, run_id, acknowledged, active,
+updated_at, announced_at, ended_at} (an alert changes in place: `save` writes its whole
+record) and `replans` {id, created_at, run_id, alert_id, plan_id, policy, state, error,
+latency_ms, mission_id}. A database of an earlier version gains the new alert columns.
 """
 
 from __future__ import annotations
@@ -22,7 +24,11 @@ CREATE TABLE IF NOT EXISTS alerts (
     target_id TEXT,
     run_id INTEGER,
     acknowledged INTEGER NOT NULL DEFAULT 0,
-    acknowledged_at TEXT
+    acknowledged_at TEXT,
+    active INTEGER NOT NULL DEFAULT 0,
+    updated_at TEXT,
+    announced_at TEXT,
+    ended_at TEXT
 );
 CREATE INDEX IF NOT EXISTS alerts_run ON alerts(run_id, time);
 CREATE TABLE IF NOT EXISTS replans (
@@ -40,7 +46,11 @@ CREATE TABLE IF NOT EXISTS replans (
 """
 
 ALERT_FIELDS = ("id", "time", "level", "kind", "message", "target_id", "run_id",
-                "acknowledged")
+                "acknowledged", "active", "updated_at", "announced_at", "ended_at")
+# columns added after the first version: (name, declaration) for ALTER TABLE
+_ADDED = (("active", "INTEGER NOT NULL DEFAULT 0"), ("updated_at", "TEXT"),
+          ("announced_at", "TEXT"), ("ended_at", "TEXT"))
+_BOOLS = ("acknowledged", "active")
 REPLAN_FIELDS = ("id", "created_at", "run_id", "alert_id", "plan_id", "policy", "state",
                  "error", "latency_ms", "mission_id")
 
@@ -52,13 +62,26 @@ class AlertStore:
         self.store = store
         with store.conn as c:
             c.executescript(SCHEMA)
+            have = {row[1] for row in c.execute("PRAGMA table_info(alerts)")}
+            for name, declaration in _ADDED:
+                if name not in have:
+                    c.execute(f"ALTER TABLE alerts ADD COLUMN {name} {declaration}")
 
-    def add(self, alert: dict[str, Any]) -> None:
+    def save(self, alert: dict[str, Any]) -> None:
+        """Write an alert as it is now (new, or changed in place: level, state, ack)."""
+        values = {**alert, "updated_at": alert.get("updated_at") or alert["time"],
+                  "announced_at": alert.get("announced_at") or alert["time"]}
         with self.store.conn as c:
-            c.execute(f"INSERT INTO alerts ({', '.join(ALERT_FIELDS)}) VALUES "
+            c.execute(f"INSERT OR REPLACE INTO alerts ({', '.join(ALERT_FIELDS)}) VALUES "
                       f"({', '.join('?' for _ in ALERT_FIELDS)})",
-                      tuple(int(alert[k]) if k == "acknowledged" else alert[k]
+                      tuple(int(bool(values.get(k))) if k in _BOOLS else values.get(k)
                             for k in ALERT_FIELDS))
+
+    def end_active(self, ended_at: str) -> int:
+        """End every alert still active (left by a previous station process); how many."""
+        with self.store.conn as c:
+            return c.execute("UPDATE alerts SET active = 0, ended_at = ?, updated_at = ? "
+                             "WHERE active = 1", (ended_at, ended_at)).rowcount
 
     def alerts(self, run: int | None = None, limit: int = 1000) -> list[dict[str, Any]]:
         """Newest first; of one run when `run` is given."""
@@ -92,5 +115,8 @@ class AlertStore:
 
 def _alert(row: sqlite3.Row) -> dict[str, Any]:
     out = dict(row)
-    out["acknowledged"] = bool(out["acknowledged"])
+    for key in _BOOLS:
+        out[key] = bool(out[key])
+    out["updated_at"] = out["updated_at"] or out["time"]
+    out["announced_at"] = out["announced_at"] or out["time"]
     return out

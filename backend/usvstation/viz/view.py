@@ -9,7 +9,8 @@ telemetry) are lines in the same space.
 The viser GUI toggles each layer and scrubs a time plane through the scene:
 at the chosen t it shows the obstacles' circles, the planned position and
 the boat's real position. While a run is live the time follows the boat
-unless the operator moves the slider.
+unless the operator moves the slider. The mother ship's hull, the world's
+targets and the day, dusk and night palettes come from viz/scene.py.
 """
 
 from __future__ import annotations
@@ -24,6 +25,15 @@ import numpy as np
 from usvstation.clock import REAL_CLOCK
 from usvstation.geometry import inflated_radius, position_at
 from usvstation.scenario import Scenario
+from usvstation.viz.scene import (
+    PALETTES,
+    Palette,
+    background_image,
+    hull_outline,
+    hull_prism,
+    palette,
+    target_sweeps,
+)
 
 CIRCLE_SIDES = 32
 TRACK_REDRAW_S = 0.5  # redraw the real path at most this often
@@ -33,9 +43,8 @@ DISC_HEIGHT_M = 0.15
 GRID_LENGTH_M = 200.0
 GRID_WIDTH_M = 120.0
 LAYERS = {"obstacles": "Obstacles", "plan": "Planned path", "track": "Real path",
-          "ramp": "Ramp and grid", "time": "Time plane"}
-PLAN_COLOR = (40, 90, 220)
-TRACK_COLOR = (220, 40, 40)
+          "ramp": "Ramp and grid", "time": "Time plane", "ship": "Mother ship",
+          "targets": "Targets"}
 
 
 def oblique_cylinder(cx: float, cy: float, r: float, vx: float, vy: float, t_end: float,
@@ -94,6 +103,14 @@ class ThreeDView:
         self._track_drawn_at = 0.0
         self._slider_from_code = False
         self._lock = threading.RLock()
+        self.palette: Palette = PALETTES["day"]
+        self.targets: list[dict[str, Any]] = []
+        self._target_time = 0.0
+        self._dangerous: frozenset[str] = frozenset()
+        self._target_nodes: dict[str, list[Any]] = {}
+        self._ship_nodes: list[Any] = []
+        self._axis_labels: list[Any] = []
+        self._plane_bounds = (-10.0, 130.0, -40.0, 40.0)
 
     @property
     def port(self) -> int | None:
@@ -110,25 +127,42 @@ class ThreeDView:
         camera.position = (100.0, -60.0, 38.0)
         camera.look_at = (40.0, 0.0, 12.0)
         self.layers = {key: scene.add_frame(f"/{key}", show_axes=False) for key in LAYERS}
-        scene.add_grid("/ramp/grid", width=GRID_LENGTH_M, height=GRID_WIDTH_M, cell_size=10.0,
-                       section_size=50.0, position=(60.0, 0.0, 0.0))
-        # the ramp: a slab behind the ramp end, and its axis out to sea
-        scene.add_box("/ramp/slab", dimensions=(6.0, 3.0, 0.4), color=(120, 120, 120),
-                      position=(-3.0, 0.0, 0.0))
-        scene.add_line_segments("/ramp/axis", np.array([[[0, 0, 0], [150, 0, 0]]], np.float32),
-                                colors=(200, 200, 200), thickness=0.1)
-        scene.add_label("/ramp/x_label", "x (m), out to sea", position=(150.0, 0.0, 0.0))
-        scene.add_label("/ramp/t_label", f"t (s) up, {self.time_scale:g} m per s",
-                        position=(0.0, 0.0, 40.0 * self.time_scale))
-        scene.add_line_segments("/ramp/t_axis", np.array(
-            [[[0, 0, 0], [0, 0, 40.0 * self.time_scale]]], np.float32),
-            colors=(90, 90, 90), thickness=0.1)
+        self._axis_labels = [
+            scene.add_label("/ramp/x_label", "x (m), out to sea", position=(150.0, 0.0, 0.0)),
+            scene.add_label("/ramp/t_label", f"t (s) up, {self.time_scale:g} m per s",
+                            position=(0.0, 0.0, 40.0 * self.time_scale))]
+        self._draw_ramp()
         self._draw_plane(-10.0, 130.0, -40.0, 40.0)
         self._planned_marker = scene.add_icosphere("/time/planned", radius=1.0,
-                                                   color=PLAN_COLOR, visible=False)
-        self._real_marker = scene.add_icosphere("/time/real", radius=1.0, color=TRACK_COLOR,
-                                                visible=False)
+                                                   color=self.palette.plan, visible=False)
+        self._real_marker = scene.add_icosphere("/time/real", radius=1.0,
+                                                color=self.palette.track, visible=False)
         self._build_gui()
+        self._apply_theme()
+
+    def _draw_ramp(self) -> None:
+        """The grid, the ramp (a slab behind the ramp end) and its axis out to sea, and the
+        time axis, in the palette's colours."""
+        scene, p = self.server.scene, self.palette
+        scene.add_grid("/ramp/grid", width=GRID_LENGTH_M, height=GRID_WIDTH_M, cell_size=10.0,
+                       section_size=50.0, position=(60.0, 0.0, 0.0), cell_color=p.grid,
+                       section_color=p.grid)
+        scene.add_box("/ramp/slab", dimensions=(6.0, 3.0, 0.4), color=p.ramp,
+                      position=(-3.0, 0.0, 0.0))
+        scene.add_line_segments("/ramp/axis", np.array([[[0, 0, 0], [150, 0, 0]]], np.float32),
+                                colors=p.grid, thickness=0.1)
+        scene.add_line_segments("/ramp/t_axis", np.array(
+            [[[0, 0, 0], [0, 0, 40.0 * self.time_scale]]], np.float32),
+            colors=p.grid, thickness=0.1)
+
+    def _apply_theme(self) -> None:
+        p = self.palette
+        self.server.gui.configure_theme(dark_mode=p.dark, brand_color=p.brand,
+                                        show_share_button=False)
+        self.server.scene.set_background_image(background_image(p), format="png")
+        labels = self._axis_labels + [nodes[2] for nodes in self._target_nodes.values()]
+        for label in labels:  # viser draws labels on white: none at night
+            label.visible = p.labels
 
     def _build_gui(self) -> None:
         gui = self.server.gui
@@ -148,6 +182,10 @@ class ThreeDView:
             follow.on_update(lambda _: self._set_follow(follow.value))
             self.gui.update(time=slider, follow=follow,
                             readout=gui.add_markdown("t = 0.0 s"))
+        with gui.add_folder("View"):
+            choice = gui.add_dropdown("Palette", tuple(PALETTES), initial_value=self.palette.name)
+            choice.on_update(lambda _: self.set_palette(choice.value))
+            self.gui["palette"] = choice
 
     def stop(self) -> None:
         if self.server is not None:
@@ -213,9 +251,10 @@ class ThreeDView:
 
     def _draw_plane(self, x0: float, x1: float, y0: float, y1: float) -> None:
         """The time plane over the scene's extent (x0..x1, y0..y1), at the current time."""
+        self._plane_bounds = (x0, x1, y0, y1)
         self._plane_centre = ((x0 + x1) / 2, (y0 + y1) / 2)
         self._plane = self.server.scene.add_box(
-            "/time/plane", dimensions=(x1 - x0, y1 - y0, 0.02), color=(120, 170, 220),
+            "/time/plane", dimensions=(x1 - x0, y1 - y0, 0.02), color=self.palette.plane,
             opacity=0.15, position=(*self._plane_centre, self.time_s * self.time_scale))
 
     def _set_horizon(self, horizon_s: float) -> None:
@@ -237,7 +276,7 @@ class ThreeDView:
             xs = [0.0, scenario.start.x, *(o.x for o in scenario.obstacles)]
             ys = [0.0, scenario.start.y, *(o.y for o in scenario.obstacles)]
             self._draw_plane(min(xs) - 15.0, max(xs) + 15.0, min(ys) - 15.0, max(ys) + 15.0)
-            self.server.scene.add_icosphere("/start", radius=1.0, color=(40, 160, 60),
+            self.server.scene.add_icosphere("/start", radius=1.0, color=self.palette.start,
                                             position=(scenario.start.x, scenario.start.y, 0.0))
         self.set_time(self.time_s)
 
@@ -250,7 +289,7 @@ class ThreeDView:
             r = inflated_radius(o.radius, self.scenario.vessel.length,
                                 self.scenario.vessel.compensation_radius)
             v, f = oblique_cylinder(o.x, o.y, r, o.vx, o.vy, self.horizon_s, self.time_scale)
-            color = (230, 120, 60) if o.moving else (150, 90, 60)
+            color = self.palette.obstacle_moving if o.moving else self.palette.obstacle
             self._obstacle_nodes.append(scene.add_mesh_simple(
                 f"/obstacles/{i}", v, f, color=color, opacity=0.45, side="double"))
             dv, df = oblique_cylinder(o.x, o.y, r, 0.0, 0.0, DISC_HEIGHT_M, 1.0)
@@ -258,6 +297,78 @@ class ThreeDView:
                                          opacity=0.9, side="double")
             self._obstacle_nodes.append(disc)
             self._discs.append((disc, o.vx, o.vy))
+        self._draw_ship()
+
+    def _draw_ship(self) -> None:
+        """The mother ship's hull: its outline at t = 0 and a prism over the horizon (it
+        stands still in the ship-fixed frame); nothing without a mother ship."""
+        scene, p = self.server.scene, self.palette
+        ship = self.scenario.mother_ship if self.scenario is not None else None
+        outline = hull_outline(ship)
+        prism = hull_prism(ship, self.horizon_s * self.time_scale)
+        for node in self._ship_nodes:
+            node.remove()
+        self._ship_nodes = []
+        if outline is not None:
+            self._ship_nodes.append(scene.add_line_segments(
+                "/ship/outline", outline, colors=p.hull, thickness=0.25))
+        if prism is not None:
+            self._ship_nodes.append(scene.add_mesh_simple(
+                "/ship/hull", *prism, color=p.hull, opacity=0.25, side="double"))
+
+    def show_targets(self, targets: list[dict[str, Any]], t_now: float,
+                     dangerous: frozenset[str] = frozenset()) -> None:
+        """The world's targets (`records.Target`s, ramp frame of now) at mission time t_now,
+        each with its predicted track along its velocity relative to the ramp; `dangerous`
+        ids are drawn in the palette's danger colour."""
+        with self._lock:
+            self.targets, self._target_time, self._dangerous = targets, t_now, dangerous
+            if self.server is None:
+                return
+            scene = self.server.scene
+            sweeps = target_sweeps(targets, t_now, self.horizon_s, self.time_scale,
+                                   self.palette, dangerous)
+            for gone in set(self._target_nodes) - {s.id for s in sweeps}:
+                for node in self._target_nodes.pop(gone):
+                    node.remove()
+            for i, sweep in enumerate(sweeps):
+                key = f"/targets/{i}_{sweep.id.replace(':', '_')}"
+                self._target_nodes[sweep.id] = [
+                    scene.add_line_segments(f"{key}/track", sweep.segments, colors=sweep.color,
+                                            thickness=0.3),
+                    scene.add_icosphere(f"{key}/now", radius=1.5, color=sweep.color,
+                                        position=sweep.position),
+                    scene.add_label(f"{key}/label", sweep.label, position=sweep.position,
+                                    visible=self.palette.labels)]
+
+    def set_palette(self, name: str) -> None:
+        """Day, dusk or night: the GUI's theme, the background and every drawn colour."""
+        new = palette(name)
+        with self._lock:
+            self.palette = new
+            if self.server is None:
+                return
+            self._apply_theme()
+            self._draw_ramp()
+            self._draw_plane(*self._plane_bounds)
+            self._planned_marker.color = new.plan
+            self._real_marker.color = new.track
+            if self.scenario is not None:
+                self.show_scenario(self.scenario)
+            if self.waypoints:
+                self.show_plan({"waypoints": self.waypoints})
+            if len(self._track) > 1:
+                self.server.scene.add_line_segments(
+                    "/track/path", polyline_segments(np.array(self._track)),
+                    colors=new.track, thickness=0.3)
+            for nodes in self._target_nodes.values():
+                for node in nodes:
+                    node.remove()
+            self._target_nodes = {}
+            self.show_targets(self.targets, self._target_time, self._dangerous)
+            choice = self.gui.get("palette")
+            if choice is not None and choice.value != name:
+                choice.value = name
 
     def show_plan(self, plan: dict[str, Any]) -> None:
         """The planned path in (x, y, t); obstacles are redrawn over the plan's duration."""
@@ -268,7 +379,7 @@ class ThreeDView:
         with self._lock:
             self.waypoints = wps
             self.server.scene.add_line_segments("/plan/path", polyline_segments(pts),
-                                                colors=PLAN_COLOR, thickness=0.3)
+                                                colors=self.palette.plan, thickness=0.3)
             self._set_horizon(max(math.ceil(wps[-1]["t"] * HORIZON_MARGIN), 10))
             if self.scenario is not None:
                 self._draw_obstacles()
@@ -294,7 +405,7 @@ class ThreeDView:
             self._track_drawn_at = now
             pts = np.array(self._track)
             self.server.scene.add_line_segments("/track/path", polyline_segments(pts),
-                                                colors=TRACK_COLOR, thickness=0.3)
+                                                colors=self.palette.track, thickness=0.3)
             if t > self.horizon_s:  # a run longer than the plan: slider and obstacles reach it
                 self._set_horizon(math.ceil(t * HORIZON_MARGIN))
                 if self.scenario is not None:

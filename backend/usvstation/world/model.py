@@ -7,8 +7,11 @@ at constant course and speed over ground from their last report.
 
 The ramp pose comes from the own ship's position reference and heading through the lever
 arm (scenario/ships.py LeverArm); without an own-ship fix the ramp is the fixed scenario
-origin. Target velocities are given over ground (`vx`, `vy`) and relative to the ramp
-(`rvx`, `rvy`): in the ship-fixed ramp frame a target moves with the relative velocity.
+origin. Once the own ship has had a fix, the ramp never falls back to the origin: a silent
+own ship is dead-reckoned from its last fix and marked stale after OWN_SHIP_STALE_S, and a
+fix further from the last one than the ship's speed allows is recorded as a jump. Target
+velocities are given over ground (`vx`, `vy`) and relative to the ramp (`rvx`, `rvy`): in
+the ship-fixed ramp frame a target moves with the relative velocity.
 """
 
 from __future__ import annotations
@@ -27,6 +30,13 @@ from usvstation.scenario.ships import LeverArm
 Source = Literal["ais", "arpa", "manual", "sim"]
 DEFAULT_RADIUS_M = 5.0  # a target of unknown size
 KNOT = 1852.0 / 3600.0  # m/s
+OWN_SHIP_STALE_S = 3.0  # an own-ship fix older than this is stale (GNSS reports at 1-10 Hz)
+# A fix further than JUMP_BASE_M + JUMP_FACTOR x max(speed, JUMP_MIN_SPEED) x dt from the
+# last one is a jump: GNSS noise and a change of speed fit well inside, a wrong fix does not.
+JUMP_BASE_M = 10.0
+JUMP_FACTOR = 1.5
+JUMP_MIN_SPEED = 1.0  # m/s
+LOST_AFTER_S = 30.0  # a target silent this long is shown as lost (AIS class A: 2-10 s)
 
 
 def compass_to_enu(speed: float, course_deg: float) -> tuple[float, float]:
@@ -69,10 +79,21 @@ class OwnShip(OwnShipReport):
 
     t_fix: float | None = None  # station time of the last position
     t: float | None = None  # station time of the last report of any kind
+    jump_m: float | None = None  # the last jump: distance between two fixes, m
+    jump_allowed_m: float | None = None  # what the ship's speed allowed in that time
+    t_jump: float | None = None  # station time of the last jump
 
     @property
     def has_fix(self) -> bool:
         return self.lat is not None and self.lon is not None
+
+    def age(self, t: float) -> float | None:
+        """Seconds since the last position fix (None without one)."""
+        return None if self.t_fix is None else max(0.0, t - self.t_fix)
+
+    def stale(self, t: float) -> bool:
+        age = self.age(t)
+        return age is not None and age > OWN_SHIP_STALE_S
 
     def velocity_enu(self) -> tuple[float, float]:
         if self.speed is None or self.course_deg is None:
@@ -121,6 +142,16 @@ def ramp_pose(own: OwnShip, arm: LeverArm, t: float) -> RampPose:
                     moving=True)
 
 
+def reference_in_ramp(arm: LeverArm) -> tuple[float, float]:
+    """The ship's position reference (its GNSS antenna) in the ramp frame: the lever arm
+    from the reference to the ramp end, reversed and turned into ramp axes (the bow points
+    `ramp_bearing_offset_deg` counter-clockwise from +x, starboard 90 degrees clockwise of it)."""
+    bow = math.radians(arm.ramp_bearing_offset_deg)
+    stbd = bow - math.pi / 2.0
+    return (-arm.forward * math.cos(bow) - arm.starboard * math.cos(stbd),
+            -arm.forward * math.sin(bow) - arm.starboard * math.sin(stbd))
+
+
 @dataclass(frozen=True)
 class Track:
     """One target: its last report, dead-reckoned between reports."""
@@ -136,6 +167,7 @@ class Track:
     name: str | None = None
     length: float | None = None
     beam: float | None = None
+    ais_class: str | None = None  # "A" or "B" for AIS targets
     t: float = 0.0  # station time of the last position report
     t_static: float | None = None  # last static report (name, size) without position
 
@@ -175,6 +207,9 @@ class World:
         changes: dict[str, float] = {"t": t}
         if lat is not None and lon is not None:
             changes.update(lat=lat, lon=lon, t_fix=t)
+            jump = self._jump(t, lat, lon)
+            if jump is not None:
+                changes.update(jump_m=jump[0], jump_allowed_m=jump[1], t_jump=t)
         if heading_deg is not None:
             changes["heading_deg"] = heading_deg % 360.0
         if course_deg is not None:
@@ -183,6 +218,19 @@ class World:
             changes["speed"] = speed
         self.own = replace(self.own, **changes)
         self.version += 1
+
+    def _jump(self, t: float, lat: float, lon: float) -> tuple[float, float] | None:
+        """(distance, allowed) when a fix lies further from the last one than the ship's
+        speed allows in the time between them, else None."""
+        own = self.own
+        if not own.has_fix or own.t_fix is None:
+            return None
+        assert own.lat is not None and own.lon is not None
+        e, n, _ = pymap3d.geodetic2enu(lat, lon, 0.0, own.lat, own.lon, 0.0, deg=True)
+        distance = math.hypot(float(e), float(n))
+        dt = max(0.0, t - own.t_fix)
+        allowed = JUMP_BASE_M + JUMP_FACTOR * max(own.speed or 0.0, JUMP_MIN_SPEED) * dt
+        return (distance, allowed) if distance > allowed else None
 
     def update_track(self, t: float, track_id: str, source: Source, **fields: object) -> Track:
         """Merge a report into a track; a report with lat and lon is a position report."""
@@ -284,7 +332,9 @@ class World:
                 lat=float(plat[i]), lon=float(plon[i]), x=float(x[i]), y=float(y[i]),
                 vx=float(vx[i]), vy=float(vy[i]), rvx=float(vx[i] - svx),
                 rvy=float(vy[i] - svy), radius=tr.radius, age_s=float(age[i]),
-                speed=tr.speed, course_deg=tr.course_deg,
+                speed=tr.speed, course_deg=tr.course_deg, heading_deg=tr.heading_deg,
+                length=tr.length, ais_class=tr.ais_class,
+                lost=tr.source != "manual" and float(age[i]) > LOST_AFTER_S,
             )
             for i, tr in enumerate(tracks)
         ]

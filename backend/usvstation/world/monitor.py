@@ -13,9 +13,13 @@ relative to the ramp), and predicts:
   DCPA/TCPA of the present motion (vector form of paper 001 eq. 10-11, as corrected in
   shared/notes/seeds-digest.md 2.3) and the COLREGs encounter class.
 
-`AlertTracker` turns values into advisory/caution/warning levels with hysteresis: a level
-is entered as soon as its threshold is crossed and left only once the value is back past
-the threshold by the hysteresis band, so a value wobbling at a threshold alerts once.
+`AlertTracker` turns values into advisory/caution/warning/alarm levels with hysteresis: a
+level is entered as soon as its threshold is crossed and left only once the value is back
+past the threshold by the hysteresis band, so a value wobbling at a threshold alerts once.
+Each condition (kind, target) is one alert that changes level in place and ends when the
+condition clears (IEC 62923 / MSC.302(87): one alert per cause); a rise is announced (it
+asks for attention: sound, acknowledgement) unless the same or a higher level of that
+condition was announced less than `REPEAT_S` ago.
 """
 
 from __future__ import annotations
@@ -28,8 +32,10 @@ import numpy as np
 
 from usvstation.geometry import position_at
 
-Level = Literal["advisory", "caution", "warning"]
-LEVELS: tuple[Level, ...] = ("advisory", "caution", "warning")
+Level = Literal["advisory", "caution", "warning", "alarm"]
+LEVELS: tuple[Level, ...] = ("advisory", "caution", "warning", "alarm")
+REPEAT_S = 30.0  # a condition's level is not announced again within this time
+STATIC_SPEED = 0.2  # m/s over ground: a target slower than this is static (a buoy, a wreck)
 Encounter = Literal["head-on", "overtaking-give-way", "overtaking-stand-on",
                     "crossing-give-way", "crossing-stand-on", "none"]
 
@@ -69,6 +75,7 @@ class TargetState:
     vy: float
     radius: float
     known: bool = False  # the running plan was made around it (a scenario obstacle)
+    moving: bool = True  # it makes way over ground (faster than STATIC_SPEED)
 
 
 @dataclass(frozen=True)
@@ -80,6 +87,7 @@ class TargetAssessment:
     tcpa_s: float
     encounter: Encounter
     known: bool = False
+    moving: bool = True
 
 
 @dataclass(frozen=True)
@@ -200,84 +208,127 @@ def assess(waypoints: np.ndarray, boat: BoatState, targets: list[TargetState],
                 dcpa_m=dcpa, tcpa_s=tcpa,
                 encounter=encounter(p, (boat.vx + fvx, boat.vy + fvy),
                                     (t.vx + fvx, t.vy + fvy), boat.heading_deg),
-                known=t.known))
+                known=t.known, moving=t.moving))
     return Assessment(tau, slip, xte, np.column_stack([px, py, s]), out)
 
 
 # --- alerts ---------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class AlertEvent:
-    """A level entered for a condition (kind, target); the service stores and publishes it."""
+    """A condition (kind, target) changed level: `level` None when it ended. `announce`: the
+    change asks for attention (a new alert, or a rise not announced within REPEAT_S)."""
 
-    level: Level
+    level: Level | None
     kind: str
     message: str
     target_id: str | None = None
+    announce: bool = True
+    rose: bool = True  # the level went up (False: down, or ended)
 
 
-def level_of(value: float, thresholds: tuple[float, float, float], current: int,
+def level_of(value: float, thresholds: tuple[float, ...], current: int,
              hysteresis: float) -> int:
-    """The new level index (-1 none, 0 advisory, 1 caution, 2 warning) for `value`, where
-    larger is worse and thresholds rise; going down needs a margin of `hysteresis`."""
+    """The new level index (-1 none, 0 advisory, 1 caution, 2 warning, 3 alarm) for `value`,
+    where larger is worse and thresholds rise (inf: no such level); going down needs a margin
+    of `hysteresis`."""
     up = max((i for i, th in enumerate(thresholds) if value >= th), default=-1)
     down = max((i for i, th in enumerate(thresholds) if value >= th - hysteresis), default=-1)
     return max(up, min(current, down))
 
 
 @dataclass
+class Condition:
+    """One alert condition's state: its level (-1: clear) and what was last announced."""
+
+    level: int = -1
+    announced: int = -1
+    announced_t: float = -math.inf
+
+
+@dataclass
 class AlertTracker:
-    """Levels per (kind, target) with hysteresis; `events` on every rise of a level."""
+    """One alert per (kind, target): levels with hysteresis, events on every change."""
 
     config: MonitorConfig = field(default_factory=MonitorConfig)
-    levels: dict[tuple[str, str | None], int] = field(default_factory=dict)
+    conditions: dict[tuple[str, str | None], Condition] = field(default_factory=dict)
+
+    @property
+    def levels(self) -> dict[tuple[str, str | None], int]:
+        """The active conditions and their level index."""
+        return {k: c.level for k, c in self.conditions.items() if c.level >= 0}
 
     def step(self, kind: str, target: str | None, value: float,
-              thresholds: tuple[float, float, float], hysteresis: float,
-              message: str) -> AlertEvent | None:
-        """One condition's value against its three thresholds; an event if its level rose."""
+             thresholds: tuple[float, ...], hysteresis: float, message: str,
+             t: float = 0.0) -> AlertEvent | None:
+        """One condition's value against its thresholds at station time t; an event if its
+        level changed (None when it did not)."""
         key = (kind, target)
-        old = self.levels.get(key, -1)
-        new = level_of(value, thresholds, old, hysteresis)
+        cond = self.conditions.setdefault(key, Condition())
+        new = level_of(value, thresholds, cond.level, hysteresis)
+        if new == cond.level:
+            return None
+        rose, cond.level = new > cond.level, new
         if new < 0:
-            self.levels.pop(key, None)
-        else:
-            self.levels[key] = new
-        if new > old:
-            return AlertEvent(LEVELS[new], kind, message, target)
-        return None
+            return AlertEvent(None, kind, message, target, announce=False, rose=False)
+        announce = rose and (new > cond.announced or t - cond.announced_t >= REPEAT_S)
+        if announce:
+            cond.announced, cond.announced_t = new, t
+        return AlertEvent(LEVELS[new], kind, message, target, announce=announce, rose=rose)
 
-    def update(self, a: Assessment) -> list[AlertEvent]:
-        """Alerts raised by this assessment (predicted clearance, collision course, slip,
-        cross-track); conditions that clear drop silently once past their hysteresis."""
+    def end(self, kind: str, target: str | None, message: str) -> AlertEvent | None:
+        """End a condition whatever its value (its target is gone); None if it was clear."""
+        cond = self.conditions.get((kind, target))
+        if cond is None or cond.level < 0:
+            return None
+        cond.level = -1
+        return AlertEvent(None, kind, message, target, announce=False, rose=False)
+
+    def forget(self, t: float) -> None:
+        """Drop clear conditions announced longer than REPEAT_S ago."""
+        for key in [k for k, c in self.conditions.items()
+                    if c.level < 0 and t - c.announced_t >= REPEAT_S]:
+            del self.conditions[key]
+
+    def update(self, a: Assessment, t: float = 0.0) -> list[AlertEvent]:
+        """Alert changes from this assessment at station time t (predicted clearance, collision
+        course, slip, cross-track); the conditions of targets no longer seen end."""
         c = self.config
         m, w = c.clearance_margin_m, c.clearance_warning_m
         events: list[AlertEvent | None] = []
         seen = set()
-        for t in a.targets:
-            seen.add(t.id)
-            what = "contact" if t.min_clearance_m <= 0 else f"{t.min_clearance_m:.1f} m"
+        for g in a.targets:
+            seen.add(g.id)
             events.append(self.step(
-                "clearance", t.id, -t.min_clearance_m, (-2 * m, -m, -w),
-                c.clearance_hysteresis_m,
-                f"{t.id}: predicted clearance {what} in {t.t_min_s:.0f} s "
-                f"(plan margin {m:.1f} m)"))
-            # on the present course: a warning only for a target the plan was not made
-            # around (a new one) and that the plan's predicted path does not clear either
-            on_course = 0.0 < t.tcpa_s < c.horizon_s
-            top = -w if not t.known and t.min_clearance_m < m else math.inf
+                "clearance", g.id, -g.min_clearance_m, (-2 * m, -m, -w, 0.0),
+                c.clearance_hysteresis_m, clearance_message(g, m), t))
+            # on the present course: only a target that makes way over ground (a buoy the
+            # ship sails past is no collision course) and that the plan was not made around
+            # (its own obstacles: the plan turns away from them, `clearance` watches them);
+            # a warning only when the plan's predicted path does not clear it either
+            on_course = g.moving and not g.known and 0.0 < g.tcpa_s < c.horizon_s
+            top = -w if g.min_clearance_m < m else math.inf
             events.append(self.step(
-                "collision_course", t.id, -t.dcpa_m if on_course else -math.inf,
+                "collision_course", g.id, -g.dcpa_m if on_course else -math.inf,
                 (-2 * m, -m, top), c.clearance_hysteresis_m,
-                f"{t.id}: on a collision course, DCPA {t.dcpa_m:.1f} m in {t.tcpa_s:.0f} s "
-                f"({t.encounter})"))
-        for key in [k for k in self.levels if k[1] is not None and k[1] not in seen]:
-            del self.levels[key]  # the target is gone
+                f"{g.id}: on a collision course, DCPA {g.dcpa_m:.1f} m in {g.tcpa_s:.0f} s "
+                f"({g.encounter})", t))
+        for kind, target in [k for k, cond in self.conditions.items()
+                             if k[1] is not None and k[1] not in seen and cond.level >= 0]:
+            events.append(self.end(kind, target, f"{target}: no longer tracked"))
         tm = c.time_margin_s
         events.append(self.step(
             "slip", None, abs(a.slip_s), (0.25 * tm, 0.5 * tm, tm), c.slip_hysteresis_s,
             f"schedule slip {a.slip_s:+.1f} s ({'behind' if a.slip_s > 0 else 'ahead'}; "
-            f"time margin {tm:.1f} s)"))
+            f"time margin {tm:.1f} s)", t))
         events.append(self.step(
             "cross_track", None, a.cross_track_m, c.cross_track_m,
-            c.cross_track_hysteresis_m, f"cross-track {a.cross_track_m:.1f} m off the plan"))
+            c.cross_track_hysteresis_m, f"cross-track {a.cross_track_m:.1f} m off the plan", t))
+        self.forget(t)
         return [e for e in events if e is not None]
+
+
+def clearance_message(g: TargetAssessment, margin: float) -> str:
+    """`ais:1: predicted clearance 1.2 m in 14 s (plan margin 1.6 m)`; contact, now."""
+    what = "contact" if g.min_clearance_m <= 0 else f"{g.min_clearance_m:.1f} m"
+    when = "now" if g.t_min_s < 0.5 else f"in {g.t_min_s:.0f} s"
+    return f"{g.id}: predicted clearance {what} {when} (plan margin {margin:.1f} m)"

@@ -38,7 +38,7 @@ class ReplanState:
 def decide(policy: Policy, level: str, kind: str, state: ReplanState, t: float,
            cooldown_s: float = 10.0) -> Action:
     """What to do about one alert under `policy`."""
-    if policy == "off" or level != "warning" or kind not in REPLAN_KINDS:
+    if policy == "off" or level not in ("warning", "alarm") or kind not in REPLAN_KINDS:
         return "none"
     if state.in_flight or state.awaiting_operator:
         return "none"
