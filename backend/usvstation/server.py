@@ -1,4 +1,9 @@
-"""Run the station under uvicorn (`usv-station serve`)."""
+"""Run the station under uvicorn (`usv-station serve`).
+
+The boat link comes first: with an external boat (`--link URL`) `serve` opens it on its own
+thread before it even imports the web app, so a restarted station reaches a boat that is
+running a mission before the boat's 3 s failsafe (docs/link.md). The heavy imports follow.
+"""
 
 from __future__ import annotations
 
@@ -11,15 +16,15 @@ import socket
 import sqlite3
 from collections.abc import Callable
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import uvicorn
 from uvicorn.protocols.http.httptools_impl import HttpToolsProtocol
 
-from usvstation.api.app import create_app
-from usvstation.api.console import default_frontend_dir, frontend_problem
-from usvstation.api.guard import install_log_redaction
 from usvstation.config import Settings
-from usvstation.station import Station
+
+if TYPE_CHECKING:
+    from usvstation.services.boat_link import OpenedLink
 
 SHUTDOWN_GRACE_S = 3  # SIGTERM: connections get this long, then telemetry is flushed
 # asyncio accepts up to `backlog` connections in one loop callback: a burst of 1000 held
@@ -128,8 +133,45 @@ def serve(settings: Settings, announce: Callable[[str], None] = print) -> int:
 
     Every start-up failure raises StartError (one line; the CLI exits 2)."""
     preflight(settings)
+    opened = open_link_first(settings)
     try:
-        station = Station(settings)
+        return _serve(settings, announce, opened)
+    finally:
+        if opened is not None:
+            close_opened(opened)
+
+
+def open_link_first(settings: Settings) -> OpenedLink | None:
+    """An external boat's link, open on its own thread before the web app is even imported
+    (None with the embedded simulated boat, which starts with the station)."""
+    if settings.link == "sim":
+        return None
+    from usvstation.config import resolve_link_key
+    from usvstation.services.boat_link import open_link_thread
+
+    return open_link_thread(settings, resolve_link_key(settings), settings.link)
+
+
+def close_opened(opened: OpenedLink) -> None:
+    """Close a link `open_link_first` opened (a no-op once the station closed it)."""
+    loop = opened.host.loop
+    if loop is None or loop.is_closed() or not loop.is_running():
+        return
+    with contextlib.suppress(Exception):
+        opened.host.call_blocking(opened.link.close, timeout=5.0)
+    with contextlib.suppress(RuntimeError):
+        loop.call_soon_threadsafe(loop.stop)
+
+
+def _serve(settings: Settings, announce: Callable[[str], None],
+           opened: OpenedLink | None) -> int:
+    from usvstation.api.app import create_app
+    from usvstation.api.console import default_frontend_dir, frontend_problem
+    from usvstation.api.guard import install_log_redaction
+    from usvstation.station import Station
+
+    try:
+        station = Station(settings, link=opened)
     except (OSError, sqlite3.Error) as exc:
         raise StartError(f"data dir {settings.data_dir}: {_one_line(exc)}") from None
     try:
