@@ -10,6 +10,7 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import gc
+import logging
 import os
 import resource
 import socket
@@ -103,6 +104,18 @@ def raise_fd_limit() -> None:
             resource.setrlimit(resource.RLIMIT_NOFILE, (want, hard))
 
 
+def show_station_log() -> None:
+    """The station's own log lines (logger `usvstation`: info and above) on stderr, one line
+    each, beside uvicorn's."""
+    logger = logging.getLogger("usvstation")
+    if not any(getattr(h, "usv_station", False) for h in logger.handlers):
+        handler = logging.StreamHandler()
+        handler.setFormatter(logging.Formatter("%(message)s"))
+        handler.usv_station = True  # type: ignore[attr-defined]
+        logger.addHandler(handler)
+        logger.setLevel(logging.INFO)
+
+
 def _one_line(exc: BaseException) -> str:
     text = str(exc).strip().splitlines()
     return f"{type(exc).__name__}: {text[0]}" if text else type(exc).__name__
@@ -181,6 +194,7 @@ def _serve(settings: Settings, announce: Callable[[str], None],
                          f"{exc.strerror}") from None
     raise_fd_limit()
     install_log_redaction()
+    show_station_log()
     settings = settings.model_copy(update={"port": sock.getsockname()[1]})
     app = create_app(station)
     HeaderTimeoutProtocol.header_timeout_s = settings.header_timeout_s
