@@ -135,7 +135,8 @@ def build_parser() -> argparse.ArgumentParser:
                      help="accept unsigned frames (only without --link-key)")
     sim.add_argument("--nv-file", type=Path, metavar="PATH",
                      help="the boat's non-volatile memory (signing replay floor) across "
-                     "restarts, like the STM32's flash")
+                     "restarts, like the STM32's flash (default: KEY.boatN.floor beside "
+                     "the --link-key file, created on first use)")
 
     _add_hil_parser(sub)
 

@@ -23,6 +23,7 @@ from usvstation.api.models import (
 from usvstation.services.export import FORMATS, export_chunks, planned_route
 
 TELEMETRY_PAGE_MAX = 100_000
+TELEMETRY_CHUNK = 2_000  # rows read and encoded at once
 
 
 def _utc(value: dt.datetime | None) -> str | None:
@@ -63,16 +64,35 @@ async def telemetry(
                                 description="cursor: rows with a larger id")] = 0,
     limit: Annotated[int, Query(ge=1, le=TELEMETRY_PAGE_MAX)] = TELEMETRY_PAGE_MAX,
 ) -> Response:
-    """Telemetry rows in id order, one page of at most 100,000 rows (read and encoded off
-    the event loop)."""
-    def page() -> tuple[bytes, int | None]:
-        rows = station.store.telemetry(run, _utc(since), _utc(until), limit, after)
-        body = json.dumps(rows, separators=(",", ":"), allow_nan=False).encode()
-        return body, rows[-1]["id"] if len(rows) == limit else None
+    """Telemetry rows in id order, one page of at most 100,000 rows, streamed: read and
+    encoded off the event loop `TELEMETRY_CHUNK` rows at a time, each sent before the next
+    is read (a slow client holds one chunk, not the page)."""
+    store, lo, hi = station.store, _utc(since), _utc(until)
+    count, end = await asyncio.to_thread(store.telemetry_page, run, lo, hi, limit, after)
 
-    body, next_after = await asyncio.to_thread(page)
-    headers = {"X-Next-After": str(next_after)} if next_after is not None else None
-    return Response(body, media_type="application/json", headers=headers)
+    def chunk(cursor: int, first: bool) -> tuple[bytes, int | None]:
+        """The page's next rows above `cursor` as JSON array items; the next cursor."""
+        rows = [r for r in store.telemetry(run, lo, hi, TELEMETRY_CHUNK, cursor)
+                if end is not None and r["id"] <= end]
+        if not rows:
+            return b"", None
+        text = json.dumps(rows, separators=(",", ":"), allow_nan=False)[1:-1]
+        last = rows[-1]["id"]
+        return (b"" if first else b",") + text.encode(), None if last == end else last
+
+    async def body() -> AsyncIterator[bytes]:
+        yield b"["
+        cursor: int | None = after if end is not None else None
+        first = True
+        while cursor is not None:
+            piece, cursor = await asyncio.to_thread(chunk, cursor, first)
+            if piece:
+                yield piece
+                first = False
+        yield b"]"
+
+    headers = {"X-Next-After": str(end)} if count == limit and end is not None else None
+    return StreamingResponse(body(), media_type="application/json", headers=headers)
 
 
 @router.get("/api/telemetry/export", tags=["telemetry"], dependencies=Read)

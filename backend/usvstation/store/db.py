@@ -332,6 +332,16 @@ class Store:
         rows = self.conn.execute(sql + " LIMIT ?", (*args, limit)).fetchall()
         return [dict(r) for r in rows]
 
+    def telemetry_page(self, run: int | None, since: str | None, until: str | None,
+                       limit: int, after: int = 0) -> tuple[int, int | None]:
+        """(rows, id of the last) of the page of at most `limit` rows above `after`, as the
+        table is now (rows stored later do not join it)."""
+        sql, args = self._telemetry_query(run, since, until, after)
+        page = "SELECT id" + sql[sql.index(" FROM telemetry"):] + " LIMIT ?"
+        count, last = self.conn.execute(f"SELECT COUNT(*), MAX(id) FROM ({page})",
+                                        (*args, limit)).fetchone()
+        return int(count), None if last is None else int(last)
+
     def iter_telemetry(self, run: int | None, since: str | None = None,
                        until: str | None = None, chunk: int = 2000) -> Iterator[list[dict]]:
         """Telemetry in chunks, on a connection of its own (for streamed exports)."""
