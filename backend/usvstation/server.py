@@ -8,6 +8,7 @@ running a mission before the boat's 3 s failsafe (docs/link.md). The heavy impor
 from __future__ import annotations
 
 import asyncio
+import collections
 import contextlib
 import gc
 import logging
@@ -42,14 +43,25 @@ class StartError(Exception):
 class HeaderTimeoutProtocol(HttpToolsProtocol):
     """uvicorn's HTTP protocol, closing a connection whose request headers are not complete
     within `header_timeout_s` of its opening or of the request's first byte (half-open and
-    slow-header connections, also on a kept-alive connection's later requests)."""
+    slow-header connections, also on a kept-alive connection's later requests), and at once
+    a connection beyond `max_per_client` open ones from the same address: a flood of
+    half-open connections from one client never fills the server's `--max-connections`
+    (which would answer 503 to everybody, the operator's own kept-alive console included)."""
 
     header_timeout_s = 10.0
+    max_per_client = 256
 
     def connection_made(self, transport: asyncio.Transport) -> None:  # type: ignore[override]
         super().connection_made(transport)
-        self._header_timer: asyncio.TimerHandle | None = self.loop.call_later(
-            self.header_timeout_s, self._header_timeout)
+        self._header_timer: asyncio.TimerHandle | None = None
+        self._peer = self.client[0] if self.client else None
+        if self._peer is not None:
+            counts = _open_per_client(self.server_state)
+            counts[self._peer] += 1
+            if counts[self._peer] > self.max_per_client:
+                transport.abort()  # nothing read, nothing answered
+                return
+        self._header_timer = self.loop.call_later(self.header_timeout_s, self._header_timeout)
 
     def on_message_begin(self) -> None:
         super().on_message_begin()
@@ -74,7 +86,22 @@ class HeaderTimeoutProtocol(HttpToolsProtocol):
 
     def connection_lost(self, exc: Exception | None) -> None:
         self._cancel_header_timer()
+        if self._peer is not None:
+            counts = _open_per_client(self.server_state)
+            counts[self._peer] -= 1
+            if counts[self._peer] <= 0:
+                del counts[self._peer]
+            self._peer = None
         super().connection_lost(exc)
+
+
+def _open_per_client(state: object) -> collections.Counter[str]:
+    """Open connections by client address, kept on uvicorn's per-server state."""
+    counts = getattr(state, "usv_open_per_client", None)
+    if counts is None:
+        counts = collections.Counter()
+        state.usv_open_per_client = counts  # type: ignore[attr-defined]
+    return counts
 
 
 def preflight(settings: Settings) -> None:
@@ -198,6 +225,7 @@ def _serve(settings: Settings, announce: Callable[[str], None],
     settings = settings.model_copy(update={"port": sock.getsockname()[1]})
     app = create_app(station)
     HeaderTimeoutProtocol.header_timeout_s = settings.header_timeout_s
+    HeaderTimeoutProtocol.max_per_client = settings.max_client_connections
     config = uvicorn.Config(app, log_level="info", lifespan="on",
                             timeout_graceful_shutdown=SHUTDOWN_GRACE_S,
                             timeout_keep_alive=settings.keep_alive_s,
