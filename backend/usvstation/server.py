@@ -174,6 +174,8 @@ def serve(settings: Settings, announce: Callable[[str], None] = print) -> int:
     Every start-up failure raises StartError (one line; the CLI exits 2)."""
     preflight(settings)
     opened = open_link_first(settings)
+    if opened is not None:
+        announce(f"usv-station: boat link open on {opened.device} (before the web app)")
     try:
         return _serve(settings, announce, opened)
     finally:
