@@ -33,6 +33,7 @@ import datetime as dt
 import os
 import socket
 import statistics
+import sys
 import tempfile
 import threading
 from collections.abc import Callable
@@ -397,15 +398,22 @@ def _half_open_load(url: str, count: int, stop: threading.Event, out: list[int])
             break
         open_one(i)
     while not stop.is_set():
-        live = [s for s in socks if s is not None]
-        readable = select.select(live, [], [], 0)[0] if live else []
-        for s in readable:  # closed by the station (header timeout, per-client cap)
+        poll = select.poll()  # select() stops at fd 1024
+        slot = {}
+        for i, s in enumerate(socks):
+            if s is not None:
+                poll.register(s, select.POLLIN)
+                slot[s.fileno()] = i
+        for fd, _ in poll.poll(0):  # closed by the station (header timeout, per-client cap)
+            i = slot[fd]
+            s = socks[i]
+            assert s is not None
             try:
                 gone = s.recv(4096) == b""
             except OSError:
                 gone = True
             if gone:
-                socks[socks.index(s)] = None
+                socks[i] = None
                 s.close()
         for i, s in enumerate(socks):
             if s is None and not stop.is_set():
@@ -537,7 +545,8 @@ def link_start(restarts: int = 3) -> dict[str, Any]:
                 os.killpg(proc.pid, signal.SIGKILL)
         pair.close()
         tmp.cleanup()
-    return {"first_heartbeat_ms": first_ms, "first_heartbeat_max_ms": max(first_ms),
+    return {"bytecode_cache": not sys.dont_write_bytecode,  # PYTHONDONTWRITEBYTECODE: slower
+            "first_heartbeat_ms": first_ms, "first_heartbeat_max_ms": max(first_ms),
             "restart_silence_ms": silence_ms,
             "restart_silence_max_ms": max(silence_ms) if silence_ms else None,
             "failsafe_after_ms": 3000}
