@@ -86,15 +86,25 @@ class HeaderTimeoutProtocol(HttpToolsProtocol):
         if not upgraded and not self.transport.is_closing():
             self.transport.close()
 
+    def handle_websocket_upgrade(self) -> None:
+        """A websocket leaves this protocol without `connection_lost` (and counts against
+        --max-ws-clients from then on)."""
+        self._cancel_header_timer()
+        self._release_peer()
+        super().handle_websocket_upgrade()
+
     def connection_lost(self, exc: Exception | None) -> None:
         self._cancel_header_timer()
+        self._release_peer()
+        super().connection_lost(exc)
+
+    def _release_peer(self) -> None:
         if self._peer is not None:
             counts = _open_per_client(self.server_state)
             counts[self._peer] -= 1
             if counts[self._peer] <= 0:
                 del counts[self._peer]
             self._peer = None
-        super().connection_lost(exc)
 
 
 def _open_per_client(state: object) -> collections.Counter[str]:

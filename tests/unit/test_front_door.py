@@ -249,6 +249,9 @@ class FakeTransport(asyncio.Transport):
     def get_protocol(self) -> Any:
         return self.protocol
 
+    def set_protocol(self, protocol: Any) -> None:
+        self.protocol = protocol
+
     def is_closing(self) -> bool:
         return self.closed or self.aborted
 
@@ -276,8 +279,10 @@ def protocols(n: int, peer: str, state: Any, timeout_s: float = 10.0, cap: int =
 
     from usvstation.server import HeaderTimeoutProtocol
 
-    async def app(scope, receive, send):  # pragma: no cover - never reached here
-        raise AssertionError
+    async def app(scope, receive, send):  # only a websocket gets this far: closed at once
+        assert scope["type"] == "websocket"
+        await receive()
+        await send({"type": "websocket.close", "code": 1000})
 
     config = uvicorn.Config(app, log_level="warning", lifespan="off")
     config.load()
@@ -311,5 +316,22 @@ def test_half_open_connections_close_after_the_header_timeout_and_beyond_the_cap
         assert len(state.connections) == 0 and not state.usv_open_per_client
         _, again = protocols(4, "10.0.0.9", state)  # the slots are free again
         assert not any(t.aborted for _, t in again)
+
+    run_simulated(main)
+
+
+def test_a_connection_upgraded_to_a_websocket_frees_its_slot():
+    async def main(clock):
+        state, conns = protocols(3, "10.0.0.5", None, cap=2)
+        assert [t.aborted for _, t in conns] == [False, False, True]
+        upgrade = (b"GET /ws/live HTTP/1.1\r\nHost: x\r\nUpgrade: websocket\r\n"
+                   b"Connection: Upgrade\r\nSec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\n"
+                   b"Sec-WebSocket-Version: 13\r\n\r\n")
+        for p, t in conns[:2]:
+            p.data_received(upgrade)
+        await clock.sleep(0.1)
+        assert not state.usv_open_per_client  # the websockets are --max-ws-clients' business
+        _, more = protocols(2, "10.0.0.5", state, cap=2)
+        assert not any(t.aborted for _, t in more)
 
     run_simulated(main)

@@ -72,6 +72,7 @@ def create_app(station: Station) -> FastAPI:
     @asynccontextmanager
     async def lifespan(_: FastAPI) -> AsyncIterator[None]:
         await station.start()
+        body_routes.takes_body("GET", "/")  # the route table before the first request
         try:
             yield
         finally:
@@ -80,6 +81,7 @@ def create_app(station: Station) -> FastAPI:
     app = FastAPI(title="USV recovery shore station", version=__version__, lifespan=lifespan,
                   description="IGA recovery planning, mission upload and telemetry (paper 000).",
                   docs_url=None, redoc_url=None)
+    body_routes = BodyRoutes(app)
     app.state.token = station.token
     app.state.tokens = station.tokens
     app.state.station = station
@@ -95,7 +97,7 @@ def create_app(station: Station) -> FastAPI:
         cors_origins=frozenset(settings.cors_origins),
         max_ws_clients=settings.max_ws_clients,
         ws_clients=lambda: len(station.hub.subscribers) + view3d_clients(app),
-        takes_body=BodyRoutes(app).takes_body))
+        takes_body=body_routes.takes_body))
 
     @app.exception_handler(StationError)
     async def refused(_: Request, exc: StationError) -> JSONResponse:

@@ -219,7 +219,12 @@ class LinkHandler:
 
     def _ingest(self, t: Telemetry) -> TelemetryRow:
         self.frames += 1
-        moving = self.moving_frame() if self.moving_frame is not None else None
+        moving = None
+        if self.moving_frame is not None:
+            try:  # the world's state, read from the link's thread
+                moving = self.moving_frame()
+            except Exception:
+                self.ingest_errors += 1
         row = telemetry_row(t, moving or self.frame, self.run, utc_now(self.clock))
         self.store.writer.put(row)
         return row
