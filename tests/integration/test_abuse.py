@@ -440,3 +440,20 @@ def test_3d_websockets_count_against_the_client_limit_and_a_drop_is_one_line(sta
     lines = [x for x in station.log.read_text().splitlines()
              if f"{peer[0]}:{peer[1]}" in x and "gone" in x]
     assert len(lines) == 1 and "Traceback" not in station.log.read_text()
+
+
+def test_a_locked_database_is_503_not_500(station):
+    import sqlite3
+
+    scenario = station.client.get("/api/scenario").json()
+    lock = sqlite3.connect(station.data_dir / "station.sqlite3", timeout=30,
+                           isolation_level=None)
+    try:
+        lock.execute("BEGIN EXCLUSIVE")  # another process holds the write lock
+        r = station.client.put("/api/scenario", json=scenario)
+        assert r.status_code == 503 and "database" in r.json()["detail"], r.text
+        assert r.headers["retry-after"] == "5"
+    finally:
+        lock.execute("ROLLBACK")
+        lock.close()
+    assert station.client.put("/api/scenario", json=scenario).status_code == 200

@@ -327,7 +327,7 @@ def test_a_connection_upgraded_to_a_websocket_frees_its_slot():
         upgrade = (b"GET /ws/live HTTP/1.1\r\nHost: x\r\nUpgrade: websocket\r\n"
                    b"Connection: Upgrade\r\nSec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\n"
                    b"Sec-WebSocket-Version: 13\r\n\r\n")
-        for p, t in conns[:2]:
+        for p, _ in conns[:2]:
             p.data_received(upgrade)
         await clock.sleep(0.1)
         assert not state.usv_open_per_client  # the websockets are --max-ws-clients' business

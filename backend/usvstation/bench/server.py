@@ -331,10 +331,13 @@ class _Watch(threading.Thread):
         self.states: dict[str, int] = {}
         self.peak_mb = 0.0
         self.stop = threading.Event()
+        self.ready = threading.Event()  # its connection is open (before any flood starts)
 
     def run(self) -> None:
         with httpx.Client(base_url=self.url, timeout=30,
                           headers={"Authorization": f"Bearer {TOKEN}"}) as c:
+            c.get("/api/health")
+            self.ready.set()
             while not self.stop.is_set():
                 self.peak_mb = max(self.peak_mb, rss_mb(self.pid))
                 try:
@@ -440,6 +443,7 @@ def flood(name: str, seconds: float, clients: int,
         baseline = rss_mb(pid)
         watch = _Watch(station.url, pid)
         watch.start()
+        watch.ready.wait(60)  # like the operator's console: connected before the flood
         stop, out = threading.Event(), []
         threads = [threading.Thread(target=load, args=(station.url, stop, out), daemon=True)
                    for _ in range(clients)]

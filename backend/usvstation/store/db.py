@@ -112,6 +112,9 @@ class WriterStats:
 QUEUE_MAX = 60_000  # 20 minutes at 50 Hz kept while the database refuses writes
 BACKOFF_S = (0.25, 0.5, 1.0, 2.0, 4.0)  # waits between failed commits, the last repeated
 WRITER_BUSY_TIMEOUT_S = 2.0
+# reads and writes for requests wait this long for a lock another process holds, then fail
+# (the API answers 503): a worker thread is not held for half a minute
+REQUEST_BUSY_TIMEOUT_S = 5.0
 
 
 class TelemetryWriter:
@@ -290,7 +293,7 @@ class Store:
         """This thread's own connection."""
         conn = getattr(self._local, "conn", None)
         if conn is None:
-            conn = self._local.conn = connect(self.path)
+            conn = self._local.conn = connect(self.path, timeout=REQUEST_BUSY_TIMEOUT_S)
         return conn
 
     # --- runs --------------------------------------------------------------
