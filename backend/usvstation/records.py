@@ -141,6 +141,7 @@ class StationHealth(TypedDict):
     loop_lag_ms: LoopLag
     link_heartbeat_gap_ms: HeartbeatGap
     link_on_own_loop: bool  # serve: the link runs on a thread and loop of its own
+    link_nice: int | None  # that thread's raised priority (nice), None when not allowed
     viser_port: NotRequired[int | None]
 
 

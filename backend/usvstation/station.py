@@ -260,6 +260,7 @@ class Station:
                             "worst_since_start": round(1000 * self.lag.worst_ever, 1)},
             "link_heartbeat_gap_ms": self._heartbeat_gap(),
             "link_on_own_loop": isinstance(self.link_host, LinkThread),
+            "link_nice": getattr(self.link_host, "nice", None),
         }
 
     def _heartbeat_gap(self) -> HeartbeatGap:

@@ -25,6 +25,7 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import logging
+import os
 import threading
 from collections import deque
 from collections.abc import AsyncIterator, Awaitable, Callable, Coroutine
@@ -144,6 +145,7 @@ class LinkThread:
         self.name = name
         self.loop: asyncio.AbstractEventLoop | None = None
         self.dropped = 0  # events lost because the owner's loop did not drain the outbox
+        self.nice: int | None = None  # the thread's nice value, when it could raise it
         self._owner: asyncio.AbstractEventLoop | None = None
         self._thread: threading.Thread | None = None
         self._outbox: deque[tuple[Callable[..., object], tuple[object, ...]]] = deque()
@@ -161,6 +163,7 @@ class LinkThread:
         ready = threading.Event()
 
         def run() -> None:
+            self.nice = _raise_priority()
             loop = asyncio.new_event_loop()
             asyncio.set_event_loop(loop)
             self.loop = loop
@@ -239,6 +242,23 @@ class LinkThread:
                 callback(*args)
             except Exception:  # one listener's fault never loses the others' events
                 log.exception("link event handler failed")
+
+
+LINK_NICE = -5  # the link's thread asks the OS for this priority (when it may: root,
+# CAP_SYS_NICE or RLIMIT_NICE); the rest of the station keeps the default 0
+
+
+def _raise_priority() -> int | None:
+    """Raise this thread's scheduling priority (Linux: a thread's own nice value) so a busy
+    machine delays the heartbeat less; the nice value obtained, None when not allowed."""
+    if not hasattr(os, "setpriority") or not hasattr(threading, "get_native_id"):
+        return None
+    tid = threading.get_native_id()
+    try:
+        os.setpriority(os.PRIO_PROCESS, tid, LINK_NICE)
+        return os.getpriority(os.PRIO_PROCESS, tid)
+    except OSError:
+        return None
 
 
 class LinkError(RuntimeError):
