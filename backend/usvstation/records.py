@@ -126,6 +126,7 @@ class HeartbeatGap(TypedDict):
     worst_last_minute: float  # ms
     worst_since_start: float  # ms
     heartbeats: int  # intervals measured
+    late: list[tuple[str, float]]  # the latest intervals over 375 ms: (when, ms)
 
 
 class StationHealth(TypedDict):

@@ -8,7 +8,7 @@ import logging
 import random
 from collections.abc import Callable
 
-from usvstation.clock import REAL_CLOCK, Clock
+from usvstation.clock import REAL_CLOCK, Clock, utc_iso
 from usvstation.config import ExposureError, Settings, Tokens, resolve_token
 from usvstation.link.protocol import BoatReport, LinkEvent
 from usvstation.link.station import LinkHost, LinkThread, PeakMeter, SameLoop
@@ -266,8 +266,11 @@ class Station:
     def _heartbeat_gap(self) -> HeartbeatGap:
         link = self.boat.link
         if link is None:
-            return {"worst_last_minute": 0.0, "worst_since_start": 0.0, "heartbeats": 0}
+            return {"worst_last_minute": 0.0, "worst_since_start": 0.0, "heartbeats": 0,
+                    "late": []}
         meter = link.heartbeat_gap
         return {"worst_last_minute": round(1000 * meter.worst_since(link.clock.now()), 1),
                 "worst_since_start": round(1000 * meter.worst_ever, 1),
-                "heartbeats": meter.count}
+                "heartbeats": meter.count,
+                "late": [(utc_iso(t), round(1000 * gap, 1))
+                         for t, gap in list(link.late_heartbeats)]}

@@ -33,6 +33,7 @@ def test_quick_server_bench():
     assert out["half_open"]["requests"] > 256  # connections made (beyond the per-client cap)
     start = out["link_start"]
     assert len(start["first_heartbeat_ms"]) == 2 and len(start["restart_silence_ms"]) == 2
+    assert out["link_heartbeat_gap_worst_during_floods_ms"] >= 375.0
     assert out["link_heartbeat_gap_worst_ms"] == max(
         out[k]["link_heartbeat_gap_ms"]["worst_last_minute"]
         for k in ("open_path_flood", "viewer_pages", "half_open"))

@@ -53,6 +53,8 @@ StreamFactory = Callable[[], Awaitable[ByteStream]]
 T = TypeVar("T")
 log = logging.getLogger("usvstation.link")
 GAP_WINDOW_S = 60.0  # "worst of the last minute"
+LATE_FACTOR = 1.5  # a heartbeat interval over 1.5 periods (375 ms) is late: kept to be shown
+LATE_KEPT = 20
 
 
 class PeakMeter:
@@ -293,6 +295,8 @@ class BoatLink:
         self.last_error = ""
         # the worst interval between two HEARTBEATs written to the port (while it is open)
         self.heartbeat_gap = PeakMeter()
+        # the latest late ones (over LATE_FACTOR periods): (unix time written, interval s)
+        self.late_heartbeats: deque[tuple[float, float]] = deque(maxlen=LATE_KEPT)
         self._heartbeat_mark = self.protocol.monitor.next_heartbeat
         self._heartbeat_written_at: float | None = None
 
@@ -461,7 +465,10 @@ class BoatLink:
             self._heartbeat_mark = mark
             now = self._now()
             if self._heartbeat_written_at is not None:
-                self.heartbeat_gap.record(now, now - self._heartbeat_written_at)
+                gap = now - self._heartbeat_written_at
+                self.heartbeat_gap.record(now, gap)
+                if gap > LATE_FACTOR * self.protocol.config.heartbeat_period_s:
+                    self.late_heartbeats.append((self.clock.unix(), gap))
             self._heartbeat_written_at = now
 
     async def _close_stream(self, reason: str) -> None:
