@@ -253,8 +253,11 @@ class Guard:
         if not _announces_body(headers):
             await self.app(scope, receive, send)
             return
-        if not self.cfg.takes_body(method, path) and not _token_body(headers):
-            await _respond(send, 413, f"{method} {path} takes no request body")
+        if not self.cfg.takes_body(method, path):
+            if not _token_body(headers):
+                await _respond(send, 413, f"{method} {path} takes no request body")
+                return
+            await self.app(scope, receive, send)  # the route never reads it
             return
         await self._with_body(scope, receive, send, headers)
 
