@@ -428,20 +428,22 @@ def test_3d_websockets_count_against_the_client_limit_and_a_drop_is_one_line(sta
             connect(station.url.replace("http", "ws") + "/3d/", open_timeout=30,
                     additional_headers=auth, subprotocols=proto)
         assert refused.value.response.status_code == 503
-        before = station.log.read_text().count("3D view client")
         peer = view[0].socket.getsockname()
         view[0].socket.shutdown(socket.SHUT_RDWR)  # the browser's tab killed
         view[0].socket.close()
+
+        def lines() -> list[str]:
+            return [x for x in station.log.read_text().splitlines()
+                    if f"3D view client {peer[0]}:{peer[1]} gone" in x]
+
         deadline = time.monotonic() + 30
-        while station.log.read_text().count("3D view client") == before:
+        while not lines():
             assert time.monotonic() < deadline, "no line for the dropped client"
             time.sleep(0.05)
     finally:
         for ws in view[1:]:
             ws.close()
-    lines = [x for x in station.log.read_text().splitlines()
-             if f"{peer[0]}:{peer[1]}" in x and "gone" in x]
-    assert len(lines) == 1 and "Traceback" not in station.log.read_text()
+    assert len(lines()) == 1 and "Traceback" not in station.log.read_text()
 
 
 def test_a_locked_database_is_503_not_500(station):
