@@ -135,7 +135,8 @@ def build_parser() -> argparse.ArgumentParser:
                      help="accept unsigned frames (only without --link-key)")
     sim.add_argument("--nv-file", type=Path, metavar="PATH",
                      help="the boat's non-volatile memory (signing replay floor) across "
-                     "restarts, like the STM32's flash")
+                     "restarts, like the STM32's flash (default: KEY.boatN.floor beside "
+                     "the --link-key file, created on first use)")
 
     _add_hil_parser(sub)
 
@@ -153,6 +154,9 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("--seeds", type=int, default=5, help="seeds per scenario (default 5)")
     bench.add_argument("--random", type=int, default=100,
                        help="random scenarios for the validity rate (default 100, 0 to skip)")
+    bench.add_argument("--base-port", type=int, metavar="N",
+                       help="server: fixed ports, the station on N and its 3D view on N+1 "
+                       "(default: any free ports)")
     bench.add_argument("--quick", action="store_true",
                        help="fewer repetitions, for a smoke test (figures not for the record)")
     bench.add_argument("--episodes", type=int, default=50,
@@ -236,8 +240,12 @@ def _comma_list(value: str) -> list[str]:
 
 
 def main(argv: list[str] | None = None) -> int:
-    tune_allocator()
     args = build_parser().parse_args(argv)
+    if args.command not in ("serve", "sim"):
+        # planning in this process: keep freed heap pages (runtime.py); not for `serve`,
+        # whose memory must come back after a burst of requests (its plan workers tune
+        # their own allocator), nor for the simulated boat
+        tune_allocator()
     try:
         command = {"serve": _cmd_serve, "plan": _cmd_plan, "bench": _cmd_bench,
                    "sim": _cmd_sim, "hil": _cmd_hil, "link-key": _cmd_link_key,
@@ -514,7 +522,7 @@ def _cmd_bench(args: argparse.Namespace) -> int:
     if args.name == "server":
         from usvstation.bench.server import run_server_bench
 
-        result = run_server_bench(quick=args.quick,
+        result = run_server_bench(quick=args.quick, base_port=args.base_port,
                                   progress=lambda msg: print(msg, file=sys.stderr, flush=True))
         print(json.dumps(result, indent=2))
         return EXIT_OK

@@ -85,6 +85,9 @@ class Settings(BaseSettings):
                                 "(then 503)")
     max_connections: int = Field(2048, ge=16, le=100_000, description="open HTTP "
                                  "connections (then 503)")
+    max_client_connections: int = Field(256, ge=1, le=100_000, description="open HTTP "
+                                        "connections from one client address (more are "
+                                        "closed at once)")
     header_timeout_s: float = Field(10.0, gt=0.0, le=300.0, description="time a client "
                                     "has to send a request's headers")
     keep_alive_s: float = Field(5.0, gt=0.0, le=300.0, description="idle keep-alive time")

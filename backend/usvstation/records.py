@@ -119,6 +119,16 @@ class LoopLag(TypedDict):
     worst_since_start: float  # ms
 
 
+class HeartbeatGap(TypedDict):
+    """The boat link's own measure (on its own loop): the worst interval between two
+    HEARTBEATs it wrote to the port (the schedule is 250 ms; the boat fails safe after 3 s)."""
+
+    worst_last_minute: float  # ms
+    worst_since_start: float  # ms
+    heartbeats: int  # intervals measured
+    late: list[tuple[str, float]]  # the latest intervals over 375 ms: (when, ms)
+
+
 class StationHealth(TypedDict):
     """`GET /api/health`: open without a token, so no boat data."""
 
@@ -130,6 +140,9 @@ class StationHealth(TypedDict):
     websocket_clients: int
     link_up: bool
     loop_lag_ms: LoopLag
+    link_heartbeat_gap_ms: HeartbeatGap
+    link_on_own_loop: bool  # serve: the link runs on a thread and loop of its own
+    link_nice: int | None  # that thread's raised priority (nice), None when not allowed
     viser_port: NotRequired[int | None]
 
 
@@ -198,6 +211,15 @@ class LinkStatus(TypedDict):
     profile: NotRequired[str]
     vehicle_mode: NotRequired[str | None]
     armed: NotRequired[bool]
+    duplicate: NotRequired[DuplicateBoat | None]
+
+
+class DuplicateBoat(TypedDict):
+    """Two boats answer as the paired boat id: their boot ids alternate in its reports."""
+
+    boot_ids: list[int]  # every boot id heard in the last minute, the first one first
+    detected_at: str  # ISO 8601 UTC
+    switches: int  # changes of boot id in the last minute
 
 
 class BoatState(TypedDict):

@@ -43,3 +43,24 @@ def tune_allocator() -> bool:
     )
     _tuned = ok
     return ok
+
+
+_libc: ctypes.CDLL | None = None
+
+
+def release_memory() -> bool:
+    """Hand the C heap's free pages back to the OS (glibc `malloc_trim(0)`, every arena):
+    after a burst of large responses the process returns to its size (the threads that
+    encoded them each keep an arena otherwise). A no-op (False) on other C libraries."""
+    global _libc
+    if not sys.platform.startswith("linux"):
+        return False
+    try:
+        if _libc is None:
+            _libc = ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6")
+        trim = _libc.malloc_trim
+    except (OSError, AttributeError):
+        return False
+    trim.argtypes = [ctypes.c_size_t]
+    trim(0)
+    return True

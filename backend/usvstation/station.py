@@ -6,16 +6,17 @@ import asyncio
 import json
 import logging
 import random
-from collections import deque
 from collections.abc import Callable
 
-from usvstation.clock import REAL_CLOCK, Clock
+from usvstation.clock import REAL_CLOCK, Clock, utc_iso
 from usvstation.config import ExposureError, Settings, Tokens, resolve_token
 from usvstation.link.protocol import BoatReport, LinkEvent
-from usvstation.records import PlanDocument, StationHealth
+from usvstation.link.station import LinkHost, LinkThread, PeakMeter, SameLoop
+from usvstation.records import HeartbeatGap, PlanDocument, StationHealth
 from usvstation.scenario import Origin, Scenario, bundled_scenario_dir, parse_scenario
 from usvstation.services.alerts import LinkAlerts
 from usvstation.services.boat import BoatService
+from usvstation.services.boat_link import OpenedLink
 from usvstation.services.hub import LiveHub
 from usvstation.services.monitor import MonitorService
 from usvstation.services.plans import PlanService
@@ -40,9 +41,12 @@ class LoopLagMonitor:
 
     def __init__(self, clock: Clock = REAL_CLOCK) -> None:
         self.clock = clock
-        self.samples: deque[tuple[float, float]] = deque()  # (monotonic time, lag s)
-        self.worst_ever = 0.0
+        self.meter = PeakMeter(LAG_WINDOW_S)
         self._task: asyncio.Task | None = None
+
+    @property
+    def worst_ever(self) -> float:
+        return self.meter.worst_ever
 
     def start(self) -> None:
         self._task = asyncio.get_running_loop().create_task(self._run(), name="loop-lag")
@@ -59,20 +63,10 @@ class LoopLagMonitor:
             self.record(now, max(0.0, now - t0 - LAG_PROBE_S))
 
     def record(self, now: float, lag: float) -> None:
-        self.worst_ever = max(self.worst_ever, lag)
-        while self.samples and (self.samples[0][0] < now - LAG_WINDOW_S
-                                or self.samples[-1][1] <= lag):
-            if self.samples[0][0] < now - LAG_WINDOW_S:
-                self.samples.popleft()
-            else:
-                self.samples.pop()
-        self.samples.append((now, lag))  # decreasing lags: the head is the window's worst
+        self.meter.record(now, lag)
 
     def worst_last_minute(self) -> float:
-        cutoff = self.clock.now() - LAG_WINDOW_S
-        while self.samples and self.samples[0][0] < cutoff:
-            self.samples.popleft()
-        return self.samples[0][1] if self.samples else 0.0
+        return self.meter.worst_since(self.clock.now())
 
 
 class Station:
@@ -80,12 +74,16 @@ class Station:
 
     Every part gets `clock` (clock.py). `in_process` is the station of simulated time (sea
     trials, in-process tests; `clock` a SimClock): plans run inline, the simulated boat
-    (`--link sim`) runs on the station's loop over an in-memory pipe, the simulated sea
-    feeds the world directly, and the 3D view's server is not started."""
+    (`--link sim`) runs on the station's loop over an in-memory pipe, the boat link too
+    (one loop: one order of events), the simulated sea feeds the world directly, and the 3D
+    view's server is not started. Otherwise (`serve`) the boat link runs on a thread and
+    event loop of its own (link/station.py `LinkThread`), so nothing the web API does can
+    delay a heartbeat; `link` is one `serve` opened there before anything else."""
 
     def __init__(self, settings: Settings, clock: Clock = REAL_CLOCK, *,
                  in_process: bool = False, scenario: Scenario | None = None,
-                 entropy: random.Random | None = None) -> None:
+                 entropy: random.Random | None = None,
+                 link: OpenedLink | None = None) -> None:
         self.settings, self.clock, self.in_process = settings, clock, in_process
         # ids and sessions: unpredictable by default; seeded in simulated time (a trial)
         self.entropy = entropy or random.SystemRandom()
@@ -105,10 +103,15 @@ class Station:
         self.lag = LoopLagMonitor(clock)
         self._watch: asyncio.Task | None = None
         self.started = self.stopped = False
+        # the one place that decides where the link runs
+        self.link_host: LinkHost = link.host if link is not None else \
+            SameLoop() if in_process else LinkThread()
         boat_service = StandardBoatService if settings.boat_protocol == "standard" \
             else BoatService
         self.boat = boat_service(settings, self.store, self.hub, self.plans, clock=clock,
-                                 entropy=self.entropy)
+                                 entropy=self.entropy, host=self.link_host,
+                                 link=link.link if link is not None else None)
+        self.opened_device = link.device if link is not None else None
         self.sim: EmbeddedSim | InProcessSim | None = None
         self.hub.observers.append(ThreeDFeed(self.view, self._plan_of_mission).on_event)
         self.world = WorldService(self.hub, settings.nmea, simulate=settings.link == "sim",
@@ -122,28 +125,37 @@ class Station:
         self.sim_vehicle: Callable[[Scenario], Vehicle] | None = None
 
     async def start(self) -> None:
-        """Start everything (once; the server's lifespan calls it again harmlessly)."""
+        """Start everything (once; the server's lifespan calls it again harmlessly). The
+        boat link first: the boat fails safe 3 s after the station's last frame, so nothing
+        slow (plan workers, the 3D view) comes before it."""
         if self.started:
             return
         self.started = True
         self.lag.start()
         self.store.start()
-        await self.plans.start()
         if self._initial_scenario is not None:
             await asyncio.to_thread(self.store.set_setting, "scenario",
                                     self._initial_scenario.model_dump(mode="json"))
         scenario = await self.working_scenario()
-        if not self.in_process:
-            await asyncio.to_thread(self.view.start)
-        self.view.show_scenario(scenario)
         if scenario.origin is None:
             origin = await self.default_origin()
             log.warning("usv-station: warning: the working scenario %r has no origin; the boat "
                         "link uses the default origin %.6f, %.6f, ramp bearing %.1f deg",
                         scenario.name, origin.lat, origin.lon, origin.ramp_bearing_deg)
-            scenario = scenario.model_copy(update={"origin": origin})
-        await self.world.start(scenario)
-        device = factory = None
+            placed = scenario.model_copy(update={"origin": origin})
+        else:
+            placed = scenario
+        await self._open_link(placed)
+        await self.plans.start()
+        if not self.in_process:
+            await asyncio.to_thread(self.view.start)
+        self.view.show_scenario(scenario)
+        await self.world.start(placed)
+        self._watch = asyncio.get_running_loop().create_task(self._watch_health())
+
+    async def _open_link(self, scenario: Scenario) -> None:
+        """The embedded simulated boat (with `--link sim`) and the boat link."""
+        device, factory = self.opened_device, None
         if self.settings.link == "sim" and self.in_process:  # on this loop, in memory
             self.sim = InProcessSim(scenario, self.settings, self.boat.key, self.clock,
                                     self.sim_vehicle, boot_id=self.entropy.getrandbits(32))
@@ -153,16 +165,14 @@ class Station:
             self.sim = EmbeddedSim(scenario, self.settings, self.boat.key)
             await asyncio.to_thread(self.sim.start)
             device = self.sim.device
+        # the moving ramp: its pose streamed to the boat, telemetry x, y in its frame
+        self.world.pose_listeners.append(self.boat.set_ramp_pose)
+        self.boat.listeners += [self.link_alerts.on_link_event, self._publish_heartbeat]
+        self.boat.on_duplicate = self.link_alerts.on_duplicate
         await self.boat.start(scenario, device, simulated=self.sim is not None,
                               stream_factory=factory)
-        if self.boat.link is not None:
-            # the moving ramp: its pose streamed to the boat, telemetry x, y in its frame
-            self.world.pose_listeners.append(self.boat.link.protocol.set_ramp_pose)
-            if self.boat.handler is not None:
-                self.boat.handler.moving_frame = self.world.current_frame
-            self.boat.link.add_listener(self.link_alerts.on_link_event)
-            self.boat.link.add_listener(self._publish_heartbeat)
-        self._watch = asyncio.get_running_loop().create_task(self._watch_health())
+        if self.boat.handler is not None:
+            self.boat.handler.moving_frame = self.world.current_frame
 
     def _publish_heartbeat(self, ev: LinkEvent) -> None:
         """Each boat report (USV_MISSION_STATE, about 1 Hz) to the live clients with the
@@ -251,4 +261,19 @@ class Station:
             "link_up": self.boat.link_up,
             "loop_lag_ms": {"worst_last_minute": round(1000 * self.lag.worst_last_minute(), 1),
                             "worst_since_start": round(1000 * self.lag.worst_ever, 1)},
+            "link_heartbeat_gap_ms": self._heartbeat_gap(),
+            "link_on_own_loop": isinstance(self.link_host, LinkThread),
+            "link_nice": getattr(self.link_host, "nice", None),
         }
+
+    def _heartbeat_gap(self) -> HeartbeatGap:
+        link = self.boat.link
+        if link is None:
+            return {"worst_last_minute": 0.0, "worst_since_start": 0.0, "heartbeats": 0,
+                    "late": []}
+        meter = link.heartbeat_gap
+        return {"worst_last_minute": round(1000 * meter.worst_since(link.clock.now()), 1),
+                "worst_since_start": round(1000 * meter.worst_ever, 1),
+                "heartbeats": meter.count,
+                "late": [(utc_iso(t), round(1000 * gap, 1))
+                         for t, gap in list(link.late_heartbeats)]}

@@ -21,3 +21,19 @@ def test_quick_server_bench():
     worst = (out["loop_lag_worst_ms_websocket"], out["loop_lag_worst_ms_planning"],
              ab["loop_lag_worst_ms"])
     assert out["loop_lag_worst_ms"] == max(worst)
+
+    for name, flood in ((k, out[k]) for k in ("open_path_flood", "viewer_pages", "half_open")):
+        # the measures are there; their values are the bench's figures (benchmarks/RESULTS.md)
+        assert flood["requests"] > 0 and flood["boat_states_seen"], name
+        assert flood["link_heartbeat_gap_ms"]["heartbeats"] > 0, name
+        assert flood["health"]["count"] > 0 and flood["health_errors"] == 0, name
+        assert set(flood["memory_mb"]) == {"baseline", "peak", "after", "after_minus_baseline"}
+    assert set(out["open_path_flood"]["statuses"]) == {"413"}
+    assert set(out["viewer_pages"]["statuses"]) == {"200"}
+    assert out["half_open"]["requests"] > 256  # connections made (beyond the per-client cap)
+    start = out["link_start"]
+    assert len(start["first_heartbeat_ms"]) == 2 and len(start["restart_silence_ms"]) == 2
+    assert out["link_heartbeat_gap_worst_during_floods_ms"] >= 375.0
+    assert out["link_heartbeat_gap_worst_ms"] == max(
+        out[k]["link_heartbeat_gap_ms"]["worst_last_minute"]
+        for k in ("open_path_flood", "viewer_pages", "half_open"))

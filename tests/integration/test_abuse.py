@@ -266,3 +266,198 @@ def test_live_clients_beyond_the_limit_get_503(station):
     finally:
         for ws in clients:
             ws.close()
+
+
+BAD_BODIES = {
+    "nested": b"[" * 5000 + b"]" * 5000,
+    "nested_object": b'{"a":' * 40 + b"1" + b"}" * 40,
+    "surrogate": b'{"name": "\\ud800", "plan_id": "\\udfff", "command": "\\ud83d"}',
+    "nan": b'{"name": "x", "start": {"x": NaN}, "plan_id": 1e999}',
+    "not_utf8": b'{"name": "\xff\xfe"}',
+}
+
+
+def _concrete(template: str) -> str:
+    return re.sub(r"\{[^}]+\}", "x", template)
+
+
+def test_no_bad_body_causes_a_5xx_on_any_route_with_or_without_a_token(station):
+    spec = station.client.get("/openapi.json").json()
+    paths = sorted({_concrete(p) for p in spec["paths"]} | {
+        "/", "/nope", "/docs", "/redoc", "/3d/", "/api", "/ws/live", "/assets/x.js"})
+    body_routes = {(verb.upper(), _concrete(p)) for p, ops in spec["paths"].items()
+                   for verb, op in ops.items() if "requestBody" in op}
+    assert ("PUT", "/api/scenario") in body_routes and ("POST", "/api/plans") in body_routes
+    tokens = {"none": "", "viewer": f"Bearer {VIEWER}", "operator": f"Bearer {TOKEN}"}
+    fives = []
+    with httpx.Client(base_url=station.url, timeout=30) as c:
+        for path in paths:
+            for method in ("GET", "POST", "PUT", "DELETE"):
+                for who, auth in tokens.items():
+                    for name, body in BAD_BODIES.items():
+                        r = c.request(method, path, content=body, headers={
+                            "Authorization": auth, "Content-Type": "application/json"})
+                        if r.status_code >= 500:
+                            fives.append((method, path, who, name, r.status_code))
+                        elif who == "operator" and (method, path) in body_routes:
+                            assert r.status_code in (400, 422), (method, path, name, r.text)
+                        elif len(body) > 16 and (((method, path) not in body_routes
+                                                  and who != "none")
+                                                 or path in ("/", "/nope", "/docs",
+                                                             "/api/health")):
+                            assert r.status_code in (401, 403, 413), (method, path, who,
+                                                                      r.status_code)
+    assert fives == []
+    assert station.client.get("/api/health").json()["status"] == "ok"
+
+
+def test_open_paths_refuse_a_body_at_once_without_reading_it(station):
+    host = host_of(station.url)
+    for path in ("/nope", "/", "/docs", "/api/health"):
+        head = (f"POST {path} HTTP/1.1\r\nHost: {host}\r\nContent-Type: application/json\r\n"
+                f"Content-Length: {MB}\r\n\r\n").encode()
+        status, _, body = raw(station.url, head, MB)
+        assert status == 413 and "takes no request body" in json.loads(body)["detail"]
+
+
+def test_a_body_less_change_from_another_origin_is_refused(station):
+    c = station.client
+    other = {"Origin": "http://127.0.0.1:1"}
+    r = c.post("/api/alerts/nope/ack", headers=other)
+    assert r.status_code == 403 and "another origin" in r.json()["detail"]
+    r = c.post("/api/alerts/nope/ack", headers={"Referer": "http://127.0.0.1:1/evil.html"})
+    assert r.status_code == 403
+    assert c.post("/api/alerts/nope/ack", headers={"Origin": station.url}).status_code == 404
+    assert c.get("/api/alerts", headers=other).status_code == 200  # reading is not a change
+
+
+def _viser_messages(frame: bytes) -> list[dict]:
+    """viser's server-to-client frame: sizes, zstd msgpack, then binary buffers."""
+    import msgspec
+    import zstandard
+
+    size, compressed = int.from_bytes(frame[:8], "little"), int.from_bytes(frame[8:16], "little")
+    inner = zstandard.ZstdDecompressor().decompress(frame[16:16 + compressed],
+                                                    max_output_size=size)
+    return msgspec.msgpack.decode(inner)["messages"]
+
+
+def test_viser_answers_nothing_without_the_proxys_secret(station):
+    parts = urlsplit(station.viser_url)
+    for headers in ({}, {"Host": "evil.example", "Origin": "http://evil.example"},
+                    {"X-USV-Proxy-Secret": "guess"}):
+        r = httpx.get(station.viser_url + "/", headers=headers, timeout=30)
+        assert (r.status_code, r.content) == (403, b"")
+    from viser import __version__ as viser_version
+
+    with pytest.raises(InvalidStatus) as refused:
+        connect(f"ws://{parts.netloc}/", open_timeout=30,
+                subprotocols=[f"viser-v{viser_version}"])
+    assert refused.value.response.status_code == 403
+
+
+def test_a_viewers_3d_gui_change_is_not_seen_by_the_operator(station):
+    import msgspec
+    from viser import __version__ as viser_version
+
+    ws_url = station.url.replace("http", "ws") + "/3d/"
+
+    def open_as(token):
+        return connect(ws_url, origin=station.url, open_timeout=30, max_size=None,
+                       subprotocols=[f"viser-v{viser_version}"],
+                       additional_headers={"Authorization": f"Bearer {token}"})
+
+    def gui_state(ws) -> dict[str, dict]:
+        """label -> {uuid, value} of each checkbox, from the scene replayed on connecting
+        (the elements as created, then every update, up to viser's ReplayDoneMessage)."""
+        found: dict[str, dict] = {}
+        label_of: dict[str, str] = {}
+        done = False
+        while not done:
+            for m in _viser_messages(ws.recv(timeout=30)):
+                kind = m.get("type", "")
+                if kind == "GuiCheckboxMessage":
+                    label = m["props"]["label"]
+                    found[label] = {"uuid": m["uuid"], "value": m["value"]}
+                    label_of[m["uuid"]] = label
+                elif kind == "GuiUpdateMessage" and m.get("uuid") in label_of \
+                        and "value" in m.get("updates", {}):
+                    found[label_of[m["uuid"]]]["value"] = m["updates"]["value"]
+                done = done or kind == "ReplayDoneMessage"
+        return found
+
+    with open_as(VIEWER) as viewer, open_as(TOKEN) as operator:
+        follow = gui_state(viewer)["Follow the live run"]
+        assert follow["value"] is True
+        plane = gui_state(operator)["Time plane"]
+        change = {"type": "GuiUpdateMessage", "uuid": follow["uuid"],
+                  "updates": {"value": False}}
+        viewer.send(msgspec.msgpack.encode(change))  # dropped by the proxy
+        operator.send(msgspec.msgpack.encode({"type": "GuiUpdateMessage", "uuid":
+                                              plane["uuid"], "updates": {"value": False}}))
+        # the operator's change reaches the viewer (the control: changes do travel) ...
+        while not any(m.get("type") == "GuiUpdateMessage" and m.get("uuid") == plane["uuid"]
+                      for m in _viser_messages(viewer.recv(timeout=30))):
+            pass
+    # ... the viewer's never reached the shared scene: a new client replays it unchanged
+    with open_as(TOKEN) as fresh:
+        state = gui_state(fresh)
+    assert state["Follow the live run"]["value"] is True
+    assert state["Time plane"]["value"] is False
+    with open_as(TOKEN) as operator:  # leave the scene as it was for the other tests
+        plane = gui_state(operator)["Time plane"]
+        operator.send(msgspec.msgpack.encode({"type": "GuiUpdateMessage", "uuid":
+                                              plane["uuid"], "updates": {"value": True}}))
+
+
+def test_3d_websockets_count_against_the_client_limit_and_a_drop_is_one_line(station):
+    from viser import __version__ as viser_version
+
+    auth = {"Authorization": f"Bearer {VIEWER}"}
+    proto = [f"viser-v{viser_version}"]
+    view = [connect(station.url.replace("http", "ws") + "/3d/", open_timeout=30,
+                    additional_headers=auth, subprotocols=proto) for _ in range(3)]
+    try:
+        for ws in view:
+            assert ws.recv(timeout=30)
+        with pytest.raises(InvalidStatus) as refused:
+            connect(station.url.replace("http", "ws") + "/ws/live", open_timeout=30,
+                    additional_headers=auth)
+        assert refused.value.response.status_code == 503
+        with pytest.raises(InvalidStatus) as refused:
+            connect(station.url.replace("http", "ws") + "/3d/", open_timeout=30,
+                    additional_headers=auth, subprotocols=proto)
+        assert refused.value.response.status_code == 503
+        peer = view[0].socket.getsockname()
+        view[0].socket.shutdown(socket.SHUT_RDWR)  # the browser's tab killed
+        view[0].socket.close()
+
+        def lines() -> list[str]:
+            return [x for x in station.log.read_text().splitlines()
+                    if f"3D view client {peer[0]}:{peer[1]} gone" in x]
+
+        deadline = time.monotonic() + 30
+        while not lines():
+            assert time.monotonic() < deadline, "no line for the dropped client"
+            time.sleep(0.05)
+    finally:
+        for ws in view[1:]:
+            ws.close()
+    assert len(lines()) == 1 and "Traceback" not in station.log.read_text()
+
+
+def test_a_locked_database_is_503_not_500(station):
+    import sqlite3
+
+    scenario = station.client.get("/api/scenario").json()
+    lock = sqlite3.connect(station.data_dir / "station.sqlite3", timeout=30,
+                           isolation_level=None)
+    try:
+        lock.execute("BEGIN EXCLUSIVE")  # another process holds the write lock
+        r = station.client.put("/api/scenario", json=scenario)
+        assert r.status_code == 503 and "database" in r.json()["detail"], r.text
+        assert r.headers["retry-after"] == "5"
+    finally:
+        lock.execute("ROLLBACK")
+        lock.close()
+    assert station.client.put("/api/scenario", json=scenario).status_code == 200

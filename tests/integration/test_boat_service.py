@@ -261,3 +261,105 @@ def test_the_mission_state_table():
     assert next_status(MissionStatus.UPLOADING, Seen.NOT_HELD) == MissionStatus.UPLOADING
     assert all(isinstance(k[0], MissionStatus) and isinstance(v, MissionStatus)
                for k, v in TRANSITIONS.items())
+
+
+class Bus:
+    """One radio channel shared by a station and several boats (what a second boat with the
+    same id and key does to the link): every frame the station sends reaches every boat,
+    every boat's frame reaches the station."""
+
+    def __init__(self) -> None:
+        self.to_station: asyncio.Queue[bytes] = asyncio.Queue()
+        self.to_boats: list[asyncio.Queue[bytes]] = []
+
+    def station_end(self) -> _BusEnd:
+        return _BusEnd(self.to_station, lambda data: [q.put_nowait(data)
+                                                      for q in self.to_boats])
+
+    def boat_end(self) -> _BusEnd:
+        q: asyncio.Queue[bytes] = asyncio.Queue()
+        self.to_boats.append(q)
+        return _BusEnd(q, self.to_station.put_nowait)
+
+
+class _BusEnd:
+    def __init__(self, rx, tx) -> None:
+        self.rx, self.tx = rx, tx
+
+    async def read(self) -> bytes:
+        return await self.rx.get()
+
+    async def write(self, data: bytes) -> None:
+        self.tx(data)
+
+    async def close(self) -> None:
+        self.rx.put_nowait(b"")
+
+
+def test_a_second_boat_with_the_same_id_raises_an_alert_within_5_s(tmp_path):
+    from usvstation.clock import run_simulated
+    from usvstation.scenario import load_scenario
+    from usvstation.services.alerts import LinkAlerts
+
+    key_path = tmp_path / "link.key"
+    wire.write_key(key_path)
+    key = wire.read_key(key_path)
+
+    async def main(clock):
+        bus = Bus()
+        store = Store(tmp_path)
+        store.start()
+        plans = Plans(store)
+        alerts: list = []
+        svc = BoatService(Settings(link="injected", data_dir=tmp_path, link_key=key_path),
+                          store, LiveHub(), plans, clock=clock,
+                          stream_factory=lambda: _ready(bus.station_end()))
+        svc.on_duplicate = LinkAlerts(alerts.append).on_duplicate
+        stops, tasks = [], []
+
+        def boat(boot_id: int):
+            b = make_boat(FRAME, config=BoatConfig(), key=key, clock=clock, boot_id=boot_id)
+            stops.append(asyncio.Event())
+            tasks.append(asyncio.get_running_loop().create_task(
+                SimulatedBoat(b, clock=clock).run(bus.boat_end(), stops[-1])))
+            return b
+
+        boat(0x1111)
+        await svc.start(load_scenario("case1"))
+        try:
+            while not (svc.link_up and svc.link.report is not None):
+                await clock.sleep(0.05)
+            a = await _upload_sim(svc, plans, clock, "a")
+            assert svc.snapshot()["link"]["duplicate"] is None and alerts == []
+            t0 = clock.now()
+            boat(0x2222)  # a second boat, same id and key, switched on
+            while not alerts:
+                await clock.sleep(0.05)
+                assert clock.now() - t0 <= 5.0, "no alert within 5 s"
+            (alert,) = alerts
+            assert (alert.level, alert.kind) == ("warning", "duplicate_boat")
+            assert "0x00001111" in alert.message and "0x00002222" in alert.message
+            dup = svc.snapshot()["link"]["duplicate"]
+            assert set(dup["boot_ids"]) == {0x1111, 0x2222} and dup["switches"] >= 2
+            stops[1].set()  # the intruder goes away: a minute later one boat again
+            await tasks[1]
+            await clock.sleep(65.0)
+            assert svc.snapshot()["link"]["duplicate"] is None
+            assert svc.missions[a].state == MissionStatus.VERIFIED  # boat 1 holds it
+            assert len(alerts) == 1
+        finally:
+            await svc.stop()
+            stops[0].set()
+            await tasks[0]
+            store.close()
+
+    run_simulated(main)
+
+
+async def _upload_sim(svc, plans, clock, plan_id: str) -> str:
+    plans.add(plan_id)
+    rec = await svc.create_mission(plan_id)
+    while svc.missions[rec["id"]].state == MissionStatus.UPLOADING:
+        await clock.sleep(0.05)
+    assert svc.missions[rec["id"]].state == MissionStatus.VERIFIED
+    return rec["id"]

@@ -7,12 +7,20 @@ In this order, for every HTTP request and websocket handshake:
 2. `/api` (but `/api/health`), `/ws` and `/3d` need a token: 401 without one,
    403 for the viewer token on anything but GET/HEAD/OPTIONS, decided from the
    headers alone, before one byte of the body is read;
-3. a body is read only up to `max_body_bytes` (413 as soon as it is exceeded,
-   whatever Content-Length says) and within `body_timeout_s` (408);
-4. a JSON body holding NaN, Infinity or a number that overflows to infinity
-   answers 422 naming the field;
-5. a websocket must come from the same origin or one of `--allowed-origins`, and
-   finds room under `max_ws_clients` (else 503).
+3. a change (any method but GET/HEAD/OPTIONS) that a browser sends with an Origin, or
+   else a Referer, must come from the station's own origin or one of `--allowed-origins`
+   / `--cors-origins` (403): a page on another port of the same host gets the operator's
+   SameSite cookie, but not a body-less POST through;
+4. a request to a route that takes no body (every GET, the body-less POSTs, any unknown
+   path) that announces one (beyond a token 16 bytes with a declared length: the `{}` a
+   client sends with every POST) is refused with 413 at once, and none of it is read;
+5. a body is read only for a route that takes one, up to `max_body_bytes` (413 as soon
+   as it is exceeded, whatever Content-Length says) and within `body_timeout_s` (408);
+6. a JSON body is parsed once here: not UTF-8 is 400, nested deeper than
+   `MAX_JSON_DEPTH` is 400, NaN, Infinity, a number that overflows to infinity or a lone
+   surrogate (text that is no Unicode) is 422 naming the field, so no route ever sees one;
+7. a websocket must come from the same origin or one of `--allowed-origins`, and
+   finds room under `max_ws_clients` (`/ws` and `/3d` together; else 503).
 
 `GET /?token=T` trades the token for an HttpOnly, SameSite=Strict cookie and
 redirects to `/`, so the token leaves the address bar; `RedactTokens` keeps it
@@ -40,6 +48,8 @@ ASGIApp = Callable[[Scope, Receive, Send], Awaitable[None]]
 
 SAFE_METHODS = frozenset({"GET", "HEAD", "OPTIONS"})
 PARSE_OFF_LOOP_BYTES = 64 * 1024
+MAX_JSON_DEPTH = 32  # a scenario nests 4 levels; deeper is an attack on a recursive encoder
+TOKEN_BODY_BYTES = 16  # a route without a body tolerates this much (`{}`), unread
 _COOKIE_SAFE = re.compile(r"^[A-Za-z0-9._~+/=-]+$")
 
 
@@ -50,9 +60,13 @@ class GuardConfig:
     body_timeout_s: float = 30.0
     bound_host: str = "127.0.0.1"
     allowed_hosts: frozenset[str] = frozenset()
-    allowed_origins: frozenset[str] = frozenset()
+    allowed_origins: frozenset[str] = frozenset()  # websockets and changes
+    cors_origins: frozenset[str] = frozenset()  # changes (the HTTP API's CORS origins)
     max_ws_clients: int = 64
-    ws_clients: Callable[[], int] = field(default=lambda: 0)
+    ws_clients: Callable[[], int] = field(default=lambda: 0)  # /ws and /3d connections
+    # (method, path) -> whether a route takes a request body (default: every change does)
+    takes_body: Callable[[str, str], bool] = field(
+        default=lambda method, _path: method not in SAFE_METHODS)
 
 
 def needed_role(path: str, method: str) -> Role | None:
@@ -95,25 +109,105 @@ def origin_allowed(origin: str | None, host_header: str | None, cfg: GuardConfig
 
 def first_non_finite(value: Any, path: tuple = ()) -> tuple | None:
     """The path of the first NaN or infinite number in parsed JSON, None when all are finite."""
+    found = first_problem(value, path)
+    return found[1] if found is not None and found[0] == "finite_number" else None
+
+
+def first_problem(value: Any, path: tuple = (), max_depth: int = MAX_JSON_DEPTH
+                  ) -> tuple[str, tuple] | None:
+    """(kind, path) of the first thing in parsed JSON no route may see, None when it is
+    clean: "depth" (nested deeper than `max_depth`), "finite_number" (NaN, infinity) or
+    "unicode" (a lone surrogate, in a value or a key). Iterative: any depth is safe here."""
     stack = [(value, path)]
     while stack:
         v, p = stack.pop()
+        if len(p) - len(path) > max_depth:
+            return "depth", p
         if isinstance(v, float):
             if not math.isfinite(v):
-                return p
+                return "finite_number", p
+        elif isinstance(v, str):
+            if not _is_unicode(v):
+                return "unicode", p
         elif isinstance(v, dict):
+            for k in v:
+                if not _is_unicode(k):
+                    return "unicode", (*p, k)
             stack.extend((x, (*p, k)) for k, x in reversed(list(v.items())))
         elif isinstance(v, list):
             stack.extend((x, (*p, i)) for i, x in reversed(list(enumerate(v))))
     return None
 
 
-def _non_finite_path(body: bytes) -> tuple | None:
+def _is_unicode(text: str) -> bool:
+    """False for text holding a lone surrogate (JSON allows "\\ud800"; UTF-8 does not)."""
+    if text.isascii():
+        return True
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        return False
+    return True
+
+
+@dataclass(frozen=True)
+class BodyRefusal:
+    status: int
+    payload: Any
+
+
+def check_json_body(body: bytes) -> BodyRefusal | None:
+    """Why a JSON body is refused (400 or 422 with FastAPI's shape), None when it may pass
+    (invalid JSON passes: the route's own validation names the error)."""
     try:
         parsed = json.loads(body)
+    except RecursionError:
+        return BodyRefusal(400, {"detail": f"JSON body nested deeper than {MAX_JSON_DEPTH} "
+                                           "levels"})
+    except UnicodeDecodeError as exc:
+        return BodyRefusal(400, {"detail": f"request body is not UTF-8: {exc.reason} at byte "
+                                           f"{exc.start}"})
     except ValueError:
-        return None  # not JSON: the route's own validation answers
-    return first_non_finite(parsed)
+        return None
+    found = first_problem(parsed)
+    if found is None:
+        return None
+    kind, where = found
+    name = ".".join(str(p) for p in where) or "body"
+    if kind == "depth":
+        return BodyRefusal(400, {"detail": f"JSON body nested deeper than {MAX_JSON_DEPTH} "
+                                           f"levels (at {name})"})
+    msg = (f"{name}: must be a finite number (NaN and Infinity are not)" if kind ==
+           "finite_number" else f"{name}: must be Unicode text (a lone surrogate is not)")
+    return BodyRefusal(422, {"detail": [{"type": kind, "loc": ["body", *where], "msg": msg,
+                                         "input": None}]})
+
+
+def _json_content(content_type: str) -> bool:
+    """Whether FastAPI would parse a body of this type as JSON (it does when none is given)."""
+    if not content_type:
+        return True
+    main = content_type.partition(";")[0].strip().lower()
+    return main == "application/json" or (main.startswith("application/")
+                                          and main.endswith("+json"))
+
+
+def _origin_of(url: str) -> str | None:
+    parts = urlsplit(url)
+    return f"{parts.scheme}://{parts.netloc}" if parts.scheme and parts.netloc else None
+
+
+def change_origin_allowed(headers: dict[str, str], cfg: GuardConfig) -> bool:
+    """A change from a browser must come from the station's own origin or an allowed one:
+    judged by Origin, else Referer; a client that sends neither is no browser."""
+    origin = headers.get("origin")
+    if origin is None and "referer" in headers:
+        origin = _origin_of(headers["referer"]) or "null"
+    if origin is None:
+        return True
+    if origin in cfg.cors_origins or "*" in cfg.cors_origins:
+        return True
+    return origin_allowed(origin, headers.get("host"), cfg)
 
 
 class Guard:
@@ -152,9 +246,18 @@ class Guard:
                 await _respond(send, 403, "the viewer token is read only: this needs the "
                                "operator token")
                 return
-        if method in SAFE_METHODS and "content-length" not in headers \
-                and "transfer-encoding" not in headers:
+        if method not in SAFE_METHODS and not change_origin_allowed(headers, self.cfg):
+            await _respond(send, 403, "a change from another origin is refused (the "
+                           "console's own origin, or --allowed-origins / --cors-origins)")
+            return
+        if not _announces_body(headers):
             await self.app(scope, receive, send)
+            return
+        if not self.cfg.takes_body(method, path):
+            if not _token_body(headers):
+                await _respond(send, 413, f"{method} {path} takes no request body")
+                return
+            await self.app(scope, receive, send)  # the route never reads it
             return
         await self._with_body(scope, receive, send, headers)
 
@@ -187,16 +290,11 @@ class Guard:
                            f"{self.cfg.body_timeout_s:g} s")
             return
         body = b"".join(chunks)
-        if body and "json" in headers.get("content-type", ""):
-            check = (asyncio.to_thread(_non_finite_path, body) if len(body) > PARSE_OFF_LOOP_BYTES
-                     else _as_awaitable(_non_finite_path(body)))
-            bad = await check
-            if bad is not None:
-                where = ".".join(str(p) for p in bad) or "body"
-                detail = [{"type": "finite_number", "loc": ["body", *bad],
-                           "msg": f"{where}: must be a finite number (NaN and Infinity are not)",
-                           "input": None}]
-                await _respond_json(send, 422, {"detail": detail})
+        if body and _json_content(headers.get("content-type", "")):
+            refusal = (await asyncio.to_thread(check_json_body, body)
+                       if len(body) > PARSE_OFF_LOOP_BYTES else check_json_body(body))
+            if refusal is not None:
+                await _respond_json(send, refusal.status, refusal.payload)
                 return
         sent = False
 
@@ -243,7 +341,7 @@ class Guard:
             refused = "token"
         elif not origin_allowed(headers.get("origin"), host, self.cfg):
             refused = "origin"
-        if refused is None and scope["path"].startswith("/ws/") \
+        if refused is None and scope["path"].startswith(("/ws/", "/3d")) \
                 and self.cfg.ws_clients() >= self.cfg.max_ws_clients:
             message = await receive()
             if message["type"] != "websocket.connect":
@@ -265,8 +363,20 @@ class Guard:
         await self.app(scope, receive, send)
 
 
-async def _as_awaitable(value: Any) -> Any:
-    return value
+def _token_body(headers: dict[str, str]) -> bool:
+    """A body of at most TOKEN_BODY_BYTES with its length declared: the `{}` a client sends
+    with every POST (the console does), which a route without a body never reads."""
+    declared = headers.get("content-length", "").strip()
+    return "transfer-encoding" not in headers and declared.isdigit() \
+        and int(declared) <= TOKEN_BODY_BYTES
+
+
+def _announces_body(headers: dict[str, str]) -> bool:
+    """Whether the request says a body follows (a Content-Length above 0, or chunked)."""
+    if "transfer-encoding" in headers:
+        return True
+    declared = headers.get("content-length", "").strip()
+    return bool(declared) and (not declared.isdigit() or int(declared) > 0)
 
 
 def _headers(scope: Scope) -> dict[str, str]:

@@ -1,7 +1,9 @@
 """Link alerts, from the link's own events: the boat link lost (a warning, ended when the link
 is back), a go-around (a warning: the boat missed an approach gate and stands by for a new
-approach; ended when it flies its mission again or the mission ends) and the boat's
-over-capacity notice (a warning: the current exceeds what it can hold; ended when it can again).
+approach; ended when it flies its mission again or the mission ends), the boat's
+over-capacity notice (a warning: the current exceeds what it can hold; ended when it can
+again), and two boats answering as the paired boat id (a warning, services/boat_link.py
+DuplicateWatch).
 
 They go through the plan monitor's `raise_alert`, so they are stored with the run they
 happened in (store/alerts.py), exported and pushed to the live hub like every other alert:
@@ -16,6 +18,7 @@ from collections.abc import Callable
 from typing import Any
 
 from usvstation.link.protocol import BoatReport, LinkDown, LinkEvent, LinkUp, StatusTextReceived
+from usvstation.records import DuplicateBoat
 from usvstation.world.monitor import AlertEvent
 
 GO_AROUND_TEXT = "go-around:"  # the boat's STATUSTEXT giving the reason
@@ -66,3 +69,12 @@ class LinkAlerts:
             self.raise_alert(AlertEvent(None, "over_capacity", "the boat holds its position "
                                         "again", announce=False, rose=False))
         self.over_capacity = ev.report.over_capacity
+
+    def on_duplicate(self, found: DuplicateBoat) -> None:
+        """Two boats with the paired id (their boot ids alternate): one warning each time."""
+        ids = ", ".join(f"{b:#010x}" for b in found["boot_ids"])
+        self.raise_alert(AlertEvent(
+            "warning", "duplicate_boat",
+            f"two boats answer as the paired boat id (boot ids {ids}): the station cannot "
+            "tell their reports apart, so mission states are not updated; switch the "
+            "intruder off or re-key the link"))

@@ -24,19 +24,26 @@ from usvstation.config import Settings, resolve_link_key
 from usvstation.geo import RampFrame
 from usvstation.link import wire
 from usvstation.link.mission import Mission, MissionError, MissionItem, mission_from_plan
-from usvstation.link.protocol import BoatRebooted, BoatReport, LinkConfig, UploadProgress
-from usvstation.link.station import BoatLink, LinkError
-from usvstation.link.transport import ByteStream, open_stream
+from usvstation.link.protocol import (
+    BoatRebooted,
+    BoatReport,
+    LinkEvent,
+    RampPoseSample,
+    UploadProgress,
+)
+from usvstation.link.station import BoatLink, LinkError, LinkHost, SameLoop
+from usvstation.link.transport import ByteStream
 from usvstation.records import (
     BoatSnapshot,
     CommandAnswer,
+    DuplicateBoat,
     ItemDifference,
     MissionRow,
     MissionView,
     Readback,
 )
 from usvstation.scenario import Scenario
-from usvstation.services.boat_link import LinkHandler
+from usvstation.services.boat_link import LinkHandler, make_link
 from usvstation.services.errors import (
     BoatRefused,
     Conflict,
@@ -60,9 +67,16 @@ class BoatService:
 
     def __init__(self, settings: Settings, store: Store, hub: LiveHub, plans: PlanService, *,
                  stream_factory: StreamFactory | None = None, clock: Clock = REAL_CLOCK,
-                 entropy: random.Random | None = None) -> None:
+                 entropy: random.Random | None = None, host: LinkHost | None = None,
+                 link: BoatLink | None = None) -> None:
         self.settings, self.store, self.hub, self.plans = settings, store, hub, plans
         self.clock = clock
+        # where the link runs (link/station.py): this loop by default; station.py gives
+        # `serve` a LinkThread. `link`: one already opened there (serve opens it first)
+        self.host: LinkHost = host or SameLoop()
+        self._opened = link
+        self.listeners: list[Callable[[LinkEvent], None]] = []  # every link event, here
+        self.on_duplicate: Callable[[DuplicateBoat], None] | None = None
         # mission wire ids and the link's session: unpredictable (SystemRandom), or seeded
         # for a station in simulated time, whose runs are then the same every time
         self.entropy = entropy or random.SystemRandom()
@@ -91,32 +105,39 @@ class BoatService:
             if rec.state == MissionStatus.ACTIVE:
                 rec.run = None  # its run closed as interrupted; the boat's report reopens one
         self.device, self.simulated = device or self.device, simulated
-        device, baud = self.device, self.settings.baud
-        factory = (stream_factory or self._stream_factory
-                   or (lambda: open_stream(device, baud)))
-        link = self._make_link(device, factory)
-        self.handler = LinkHandler(link, device, self.store, self.hub,
-                                   self._on_report, self._on_reboot)
-        self.runs.handler = self.handler
+        await self.host.start()
+        link = self._opened
+        if link is None:
+            link = make_link(self.settings, self.key, self.device,
+                             stream_factory=stream_factory or self._stream_factory,
+                             clock=self.clock, session=self.entropy.randrange(1, 1 << 24))
+        handler = LinkHandler(link, self.device, self.store, self.hub,
+                              self._on_report, self._on_reboot, host=self.host)
+        handler.listeners = self.listeners
+        handler.on_duplicate = self._on_duplicate
+        self.handler = self.runs.handler = handler
         if scenario.origin is not None:
             o = scenario.origin
-            self.handler.frame = RampFrame(o.lat, o.lon, o.ramp_bearing_deg)
-        await link.start()
-
-    def _make_link(self, device: str, factory: StreamFactory) -> BoatLink:
-        """The usv-link 2 link (services/standard_boat.py makes a stock autopilot's)."""
-        baud = self.settings.baud
-        config = LinkConfig(boat_id=self.settings.boat_id, station_id=self.settings.station_id,
-                            baud=baud, link_timeout_s=self.settings.heartbeat_timeout_s)
-        return BoatLink(device, baud=baud, stream_factory=factory, config=config, key=self.key,
-                        clock=self.clock, session=self.entropy.randrange(1, 1 << 24))
+            handler.frame = RampFrame(o.lat, o.lon, o.ramp_bearing_deg)
+        if self._opened is None:
+            await self.host.call(link.start)
 
     async def stop(self) -> None:
-        """Close the link and the simulated boat; sends the boat nothing."""
+        """Close the link (and let its loop go); sends the boat nothing."""
         for task in list(self._tasks):
             task.cancel()
         if self.handler is not None:
-            await self.handler.link.close()
+            await self.host.call(self.handler.link.close)
+        await self.host.stop()
+
+    def set_ramp_pose(self, sample: RampPoseSample | None) -> None:
+        """The moving ramp's pose for the link to stream (from the station's loop)."""
+        if self.handler is not None:
+            self.host.post(self.handler.link.protocol.set_ramp_pose, sample)
+
+    def _on_duplicate(self, found: DuplicateBoat) -> None:
+        if self.on_duplicate is not None:
+            self.on_duplicate(found)
 
     @property
     def link(self) -> BoatLink | None:
@@ -225,9 +246,10 @@ class BoatService:
                 self._last_progress[rec.id] = now
                 self.hub.publish("mission", rec.public())
 
+        on_progress = self.host.to_owner(progress)  # called on the link's loop
         try:
-            result = await link.upload_mission(mission, progress_cb=progress,
-                                               swap_at_ms=swap_at_ms)
+            result = await self.host.call(lambda: link.upload_mission(
+                mission, progress_cb=on_progress, swap_at_ms=swap_at_ms))
         except LinkError as exc:
             ok, reason = False, str(exc)
         else:
@@ -250,7 +272,7 @@ class BoatService:
             raise NotFound(f"no mission {mission_id!r}")
         link = self._require_link()
         try:
-            result = await link.read_mission(rec.wire_id, rec.total)
+            result = await self.host.call(lambda: link.read_mission(rec.wire_id, rec.total))
         except LinkError as exc:
             raise Conflict(str(exc)) from None
         if result.items is None:
@@ -284,7 +306,7 @@ class BoatService:
                                      f"{report.active_id}), not {mission_id}")
             wire_id, crc = rec.wire_id, rec.crc or 0
         try:
-            outcome = await link.command(name, wire_id, crc)
+            outcome = await self.host.call(lambda: link.command(name, wire_id, crc))
         except LinkError as exc:
             raise LinkUnavailable(str(exc)) from None
         if outcome.result is None:
@@ -306,7 +328,11 @@ class BoatService:
 
     # --- reports ----------------------------------------------------------------------------
     def _on_report(self, ev: BoatReport) -> None:
-        """Every USV_MISSION_STATE: derive each mission's state; open/close runs."""
+        """Every USV_MISSION_STATE: derive each mission's state; open/close runs. Not while
+        two boats answer as the paired id (their reports cannot be told apart: the missions
+        keep their states, the alert and /api/boat say why)."""
+        if self.handler is not None and self.handler.duplicates.detected_at is not None:
+            return
         for rec in self.missions.values():
             if rec is self.uploading:
                 continue  # decided when its upload ends, then by the reports

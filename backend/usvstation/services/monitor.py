@@ -527,9 +527,8 @@ class ReplanService:
             return
         record.update(state="applied", mission_id=mission["id"], error=None,
                       latency_ms=round((m.clock.now() - self._t_event[record["id"]]) * 1000, 1))
-        job = m.plans.get(record["plan_id"])
-        if job is not None:
-            m.use_plan(job, m.run)
+        # the monitor follows the new plan once the boat flies it: the run its swap opens
+        # (on_event "run"), not from the boat's acceptance, seconds before the swap instant
 
     def _save(self, record: Replan) -> None:
         m = self.monitor

@@ -13,6 +13,7 @@ import contextlib
 import threading
 from collections.abc import Callable
 from dataclasses import dataclass
+from pathlib import Path
 
 from usvstation.clock import REAL_CLOCK, Clock
 from usvstation.config import Settings
@@ -24,15 +25,23 @@ from usvstation.link.transport import (
     PtyPair,
 )
 from usvstation.scenario import Scenario
-from usvstation.sim.boat import BoatConfig, BoatProtocol
-from usvstation.sim.runner import SimulatedBoat, make_boat, make_vehicle
+from usvstation.sim.boat import BoatConfig, BoatProtocol, NonVolatile
+from usvstation.sim.runner import (
+    SimulatedBoat,
+    default_nv_path,
+    load_nv,
+    make_boat,
+    make_vehicle,
+)
 from usvstation.sim.vehicle import Vehicle
 
 
 @dataclass
 class EmbeddedSim:
     """The simulated boat on the far end of a pty, paired with this station and signing
-    with the station's key (None only with --insecure-link)."""
+    with the station's key (None only with --insecure-link), its signing floor kept beside
+    the key like any boat's (sim/runner.py `default_nv_path`): a session recorded before a
+    restart of `serve` is refused after it."""
 
     scenario: Scenario
     settings: Settings
@@ -60,15 +69,28 @@ class EmbeddedSim:
     def _run(self) -> None:
         asyncio.run(self._main())
 
+    @property
+    def nv_path(self) -> Path | None:
+        """The boat's signing floor file (None for an unsigned link)."""
+        if self.key is None:
+            return None
+        s = self.settings
+        return default_nv_path(s.link_key or s.data_dir / "link.key", s.boat_id)
+
     async def _main(self) -> None:
         self._loop, self._stop = asyncio.get_running_loop(), asyncio.Event()
-        boat = build_boat(self.scenario, self.settings, self.key, REAL_CLOCK)
-        self._ready.set()
-        await SimulatedBoat(boat).run(self.pair.master_stream(), self._stop)
+        try:
+            nv_path = self.nv_path
+            nv = load_nv(nv_path) if nv_path is not None else None
+            boat = build_boat(self.scenario, self.settings, self.key, REAL_CLOCK, nv=nv)
+        finally:
+            self._ready.set()
+        await SimulatedBoat(boat, nv_path=nv_path).run(self.pair.master_stream(), self._stop)
 
 
 def build_boat(scenario: Scenario, settings: Settings, key: bytes | None, clock: Clock,
-               vehicle: Vehicle | None = None, boot_id: int | None = None) -> BoatProtocol:
+               vehicle: Vehicle | None = None, boot_id: int | None = None,
+               nv: NonVolatile | None = None) -> BoatProtocol:
     """The simulated boat of the station's settings at the scenario's start, on `clock`;
     `vehicle` default: the dynamic Otter of sim/runner.py `make_vehicle`; `boot_id`
     default: drawn at random by the boat."""
@@ -82,7 +104,8 @@ def build_boat(scenario: Scenario, settings: Settings, key: bytes | None, clock:
     return make_boat(frame, config=config, key=key, gnss_error=s.sim_gnss_error,
                      vehicle=vehicle or make_vehicle(
                          "dynamic", scenario, sensors="rtk" if s.sim_gnss_error else "exact"),
-                     x=scenario.start.x, y=scenario.start.y, clock=clock, boot_id=boot_id)
+                     x=scenario.start.x, y=scenario.start.y, clock=clock, boot_id=boot_id,
+                     nv=nv)
 
 
 class InProcessSim:

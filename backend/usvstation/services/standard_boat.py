@@ -18,10 +18,9 @@ stock autopilot can do, docs/link.md "Standard MAVLink":
 
 from __future__ import annotations
 
-from usvstation.link.standard import PROFILES, StandardConfig
 from usvstation.link.standard_link import StandardLink
 from usvstation.records import BoatSnapshot, MissionView
-from usvstation.services.boat import BoatService, StreamFactory
+from usvstation.services.boat import BoatService
 from usvstation.services.errors import Conflict
 
 UNSIGNED = ("unsigned link: the vehicle does not sign its frames, so anyone with a radio "
@@ -34,15 +33,6 @@ class StandardBoatService(BoatService):
     """BoatService on a stock autopilot: same interface, standard protocols underneath."""
 
     swap_mission = None  # type: ignore[assignment]  # no timed hot swap (monitor reads it)
-
-    def _make_link(self, device: str, factory: StreamFactory) -> StandardLink:
-        s = self.settings
-        config = StandardConfig(boat_id=s.boat_id, station_id=s.station_id, baud=s.baud,
-                                link_timeout_s=s.heartbeat_timeout_s,
-                                profile=PROFILES[s.vehicle_profile], guided=s.standard_guided)
-        return StandardLink(device, baud=s.baud, stream_factory=factory, config=config,
-                            key=self.key, clock=self.clock,
-                            session=self.entropy.randrange(1, 1 << 24))
 
     async def create_mission(self, plan_id: str,
                              swap_at_ms: int | None = None) -> MissionView:

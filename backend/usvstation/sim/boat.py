@@ -101,9 +101,11 @@ class NonVolatile:
     """What survives a reboot (flash on the STM32): the highest signing timestamp the
     boat accepted from its station, written at most every PERSIST_PERIOD_S. After a boot
     the boat accepts only station timestamps above it + 2 PERSIST_PERIOD_S, so nothing
-    recorded before the reboot can be replayed."""
+    recorded before the reboot can be replayed; `exact`: written at a clean shutdown with
+    the last timestamp accepted, so above it is enough."""
 
     sign_floor: int = 0
+    exact: bool = False
 
 
 @dataclass
@@ -146,8 +148,8 @@ class BoatProtocol:
         self.key = key
         self.unix_time, self.started = unix_time, now
         self.boot_id = boot_id if boot_id is not None else random.SystemRandom().getrandbits(32)
-        floor = self.nv.sign_floor + int(2 * PERSIST_PERIOD_S * wire.TICKS_PER_S) \
-            if self.nv.sign_floor else 0
+        margin = 0 if self.nv.exact else int(2 * PERSIST_PERIOD_S * wire.TICKS_PER_S)
+        floor = self.nv.sign_floor + margin if self.nv.sign_floor else 0
         self.codec = wire.Codec(cfg.boat_id, wire.BOAT_COMPONENT, key, link_id=cfg.link_id,
                                 timestamp=wire.signing_time(unix_time), stream_floor=floor,
                                 allow_unsigned=(mav.MAVLINK_MSG_ID_RADIO_STATUS,))
@@ -192,6 +194,11 @@ class BoatProtocol:
     @property
     def uptime_ms(self) -> int:
         return int(round(self.boat_time * 1000, 6)) & 0xFFFFFFFF
+
+    def newest_station_timestamp(self) -> int:
+        """The highest signing timestamp accepted from the station (0: none yet)."""
+        return max((t for (_, sysid, _), t in self.codec.streams.items()
+                    if sysid == self.cfg.station_id), default=0)
 
     def _stamp(self, now: float) -> int:
         return wire.signing_time(self.unix_time + now - self.started)
@@ -298,8 +305,7 @@ class BoatProtocol:
             return  # for another boat
         self.last_rx = now
         if self.key is not None:
-            ts = max((t for (_, sysid, _), t in self.codec.streams.items()
-                      if sysid == self.cfg.station_id), default=0)
+            ts = self.newest_station_timestamp()
             if now >= self.next_persist and ts > self.nv.sign_floor:
                 self.nv.sign_floor = ts
                 self.next_persist = now + PERSIST_PERIOD_S

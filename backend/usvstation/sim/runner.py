@@ -73,8 +73,15 @@ class SimulatedBoat:
     clock: Clock = REAL_CLOCK
 
     async def run(self, stream: ByteStream, stop: asyncio.Event | None = None) -> str:
-        """Serve until the stream closes (returns why) or `stop` is set."""
-        self._saved_floor = self.boat.nv.sign_floor
+        """Serve until the stream closes (returns why) or `stop` is set. With `nv_path` the
+        floor in it is marked inexact at once (a crash from now on leaves the 2 s margin),
+        kept up to date while running and written exact when the run ends cleanly."""
+        nv = self.boat.nv
+        self._saved_floor = nv.sign_floor
+        if nv.exact:  # the boot used it; from now on only a clean end makes it exact again
+            nv.exact = False
+            if self.nv_path is not None:
+                save_nv(self.nv_path, nv)
         stop = stop or asyncio.Event()
         reader = asyncio.get_running_loop().create_task(self._read(stream))
         try:
@@ -87,6 +94,10 @@ class SimulatedBoat:
             reader.cancel()
             with contextlib.suppress(asyncio.CancelledError, Exception):
                 await reader
+            nv.sign_floor = max(nv.sign_floor, self.boat.newest_station_timestamp())
+            if self.nv_path is not None and nv.sign_floor > 0:
+                self._saved_floor = nv.sign_floor
+                save_nv(self.nv_path, NonVolatile(nv.sign_floor, exact=True))
         return "stopped" if stop.is_set() else "stream closed"
 
     async def _read(self, stream: ByteStream) -> None:
@@ -114,20 +125,39 @@ class SimulatedBoat:
                 await stream.write(data)
 
 
+def default_nv_path(key_path: Path, boat_id: int) -> Path:
+    """Where a boat keeps its signing floor by default: beside its key, one file per boat
+    id (`link.key` -> `link.key.boat1.floor`); the C host boat uses the same name."""
+    return key_path.with_name(f"{key_path.name}.boat{boat_id}.floor")
+
+
 def load_nv(path: Path) -> NonVolatile:
-    """The boat's non-volatile memory from a JSON file (missing: a factory-new boat)."""
+    """The boat's non-volatile memory from its file (missing: a factory-new boat): the C
+    boat's line `sign_floor N` (with ` exact` after a clean shutdown), or the JSON object
+    earlier versions wrote."""
     try:
-        data = json.loads(path.read_text(encoding="utf-8"))
+        text = path.read_text(encoding="utf-8").strip()
     except FileNotFoundError:
         return NonVolatile()
-    except (OSError, ValueError) as exc:
+    except OSError as exc:
         raise ValueError(f"nv file {path}: {exc}") from None
-    return NonVolatile(sign_floor=int(data.get("sign_floor", 0)))
+    try:
+        if text.startswith("{"):
+            data = json.loads(text)
+            return NonVolatile(sign_floor=int(data.get("sign_floor", 0)))
+        words = text.split()
+        if len(words) in (2, 3) and words[0] == "sign_floor":
+            return NonVolatile(int(words[1]), exact=words[2:] == ["exact"])
+    except (ValueError, AttributeError) as exc:
+        raise ValueError(f"nv file {path}: {exc}") from None
+    raise ValueError(f"nv file {path}: not a signing floor ('sign_floor N')")
 
 
 def save_nv(path: Path, nv: NonVolatile) -> None:
+    """Write the floor atomically (a crash leaves the old one, never a torn one)."""
     tmp = path.with_suffix(path.suffix + ".tmp")
-    tmp.write_text(json.dumps({"sign_floor": nv.sign_floor}), encoding="utf-8")
+    tmp.write_text(f"sign_floor {nv.sign_floor}{' exact' if nv.exact else ''}\n",
+                   encoding="utf-8")
     os.replace(tmp, path)
 
 

@@ -112,6 +112,9 @@ class WriterStats:
 QUEUE_MAX = 60_000  # 20 minutes at 50 Hz kept while the database refuses writes
 BACKOFF_S = (0.25, 0.5, 1.0, 2.0, 4.0)  # waits between failed commits, the last repeated
 WRITER_BUSY_TIMEOUT_S = 2.0
+# reads and writes for requests wait this long for a lock another process holds, then fail
+# (the API answers 503): a worker thread is not held for half a minute
+REQUEST_BUSY_TIMEOUT_S = 5.0
 
 
 class TelemetryWriter:
@@ -290,7 +293,7 @@ class Store:
         """This thread's own connection."""
         conn = getattr(self._local, "conn", None)
         if conn is None:
-            conn = self._local.conn = connect(self.path)
+            conn = self._local.conn = connect(self.path, timeout=REQUEST_BUSY_TIMEOUT_S)
         return conn
 
     # --- runs --------------------------------------------------------------
@@ -331,6 +334,16 @@ class Store:
         sql, args = self._telemetry_query(run, since, until, after)
         rows = self.conn.execute(sql + " LIMIT ?", (*args, limit)).fetchall()
         return [dict(r) for r in rows]
+
+    def telemetry_page(self, run: int | None, since: str | None, until: str | None,
+                       limit: int, after: int = 0) -> tuple[int, int | None]:
+        """(rows, id of the last) of the page of at most `limit` rows above `after`, as the
+        table is now (rows stored later do not join it)."""
+        sql, args = self._telemetry_query(run, since, until, after)
+        page = "SELECT id" + sql[sql.index(" FROM telemetry"):] + " LIMIT ?"
+        count, last = self.conn.execute(f"SELECT COUNT(*), MAX(id) FROM ({page})",
+                                        (*args, limit)).fetchone()
+        return int(count), None if last is None else int(last)
 
     def iter_telemetry(self, run: int | None, since: str | None = None,
                        until: str | None = None, chunk: int = 2000) -> Iterator[list[dict]]:

@@ -11,13 +11,24 @@ at the chosen t it shows the obstacles' circles, the planned position and
 the boat's real position. While a run is live the time follows the boat
 unless the operator moves the slider. The mother ship's hull, the world's
 targets and the day, dusk and night palettes come from viz/scene.py.
+
+viser's server listens on a loopback port and answers only requests that carry this
+start's secret (`PROXY_SECRET_HEADER`, `ThreeDView.secret`), which only the station's own
+proxy (api/view3d.py, behind the token) sends: another local process, a page in a browser
+or a forged Host header gets 403 and no byte of the scene.
 """
 
 from __future__ import annotations
 
 import bisect
+import contextlib
+import hmac
+import http
 import math
+import secrets
 import threading
+from collections.abc import Callable, Iterator
+from types import SimpleNamespace
 from typing import Any
 
 import numpy as np
@@ -45,6 +56,50 @@ GRID_WIDTH_M = 120.0
 LAYERS = {"obstacles": "Obstacles", "plan": "Planned path", "track": "Real path",
           "ramp": "Ramp and grid", "time": "Time plane", "ship": "Mother ship",
           "targets": "Targets"}
+
+
+PROXY_SECRET_HEADER = "X-USV-Proxy-Secret"
+_SERVE_LOCK = threading.Lock()  # one viser server put behind its secret at a time
+
+
+def _serve_with_secret(real_serve: Callable[..., Any], secret: str, started: list[bool],
+                       handler: Any, *args: Any, process_request: Any = None,
+                       **kwargs: Any) -> Any:
+    """websockets' `serve` as viser calls it, with a first check of every HTTP request and
+    websocket handshake: without `secret` in PROXY_SECRET_HEADER, 403 and nothing else."""
+
+    def check(connection: Any, request: Any) -> Any:
+        given = request.headers.get(PROXY_SECRET_HEADER, "")
+        if not hmac.compare_digest(given.encode(), secret.encode()):
+            return connection.respond(http.HTTPStatus.FORBIDDEN, "")
+        return process_request(connection, request) if process_request is not None else None
+
+    started.append(True)
+    return real_serve(handler, *args, process_request=check, **kwargs)
+
+
+@contextlib.contextmanager
+def _viser_behind_secret(secret: str) -> Iterator[list[bool]]:
+    """While a ViserServer starts, its websockets `serve` checks `secret` first (viser has
+    no hook for it: its module's `websockets` is swapped for one whose `serve` does). The
+    list yielded holds True once viser's server was started that way."""
+    from functools import partial
+
+    from viser.infra import _infra
+
+    started: list[bool] = []
+    with _SERVE_LOCK:
+        real = _infra.websockets
+        server = SimpleNamespace(
+            serve=partial(_serve_with_secret, real.asyncio.server.serve, secret, started),
+            ServerConnection=real.asyncio.server.ServerConnection)
+        _infra.websockets = SimpleNamespace(
+            asyncio=SimpleNamespace(server=server), datastructures=real.datastructures,
+            exceptions=real.exceptions)
+        try:
+            yield started
+        finally:
+            _infra.websockets = real
 
 
 def oblique_cylinder(cx: float, cy: float, r: float, vx: float, vy: float, t_end: float,
@@ -111,16 +166,25 @@ class ThreeDView:
         self._ship_nodes: list[Any] = []
         self._axis_labels: list[Any] = []
         self._plane_bounds = (-10.0, 130.0, -40.0, 40.0)
+        self.secret = secrets.token_urlsafe(32)  # the proxy's, for this start
 
     @property
     def port(self) -> int | None:
         return None if self.server is None else int(self.server.get_port())
 
     def start(self) -> None:
+        """Start viser's server on the loopback port, answering only the proxy's secret."""
         import viser
 
-        self.server = viser.ViserServer(host=self.host, port=self.requested_port, verbose=False,
-                                        label="USV recovery: x, y, t")
+        self.secret = secrets.token_urlsafe(32)
+        with _viser_behind_secret(self.secret) as guarded:
+            server = viser.ViserServer(host=self.host, port=self.requested_port,
+                                       verbose=False, label="USV recovery: x, y, t")
+        if not guarded:  # fail closed: a viser whose server no longer starts as expected
+            server.stop()
+            raise RuntimeError("the 3D view's server could not be put behind the proxy's "
+                               f"secret (viser {viser.__version__})")
+        self.server = server
         scene = self.server.scene
         scene.set_up_direction("+z")
         camera = self.server.initial_camera

@@ -12,7 +12,10 @@
  * and prints its device (the station opens it); anything else is opened as a serial
  * device or pty slave (raw). --nv-file is the boat's non-volatile memory: the signing
  * floor (the newest signing timestamp seen), written every second and read at boot, so a
- * frame recorded before a reboot is refused after it even without a clock. --baud paces
+ * frame recorded before a reboot is refused after it even without a clock; by default it
+ * is KEY.boatN.floor beside the --link-key file (the Python boats' name), created on first
+ * use; a clean stop writes it exact ("sign_floor N exact": the next boot accepts from N+1,
+ * else from N + 2 s, the frames of the last second before a crash included). --baud paces
  * the boat's telemetry to that line rate behind its replies (0, the default: no pacing). The boat clock runs --speedup times the wall clock;
  * the link timeouts (failsafe, duplicate memory, staging expiry) stay in wall time.
  * The "UART interrupt" is the read() of the main loop: bytes go to usv_boat_rx_byte(),
@@ -372,21 +375,25 @@ static int listen_port(int port, int *bound)
     return fd;
 }
 
-/* the non-volatile memory: one line "sign_floor N" */
-static uint64_t nv_read(const char *path)
+/* the non-volatile memory: one line "sign_floor N", "sign_floor N exact" after a clean stop */
+static uint64_t nv_read(const char *path, int *exact)
 {
     unsigned long long v = 0;
+    char word[16] = "";
     FILE *f = path != NULL ? fopen(path, "r") : NULL;
+    *exact = 0;
     if (f != NULL) {
-        if (fscanf(f, "sign_floor %llu", &v) != 1) {
+        int n = fscanf(f, "sign_floor %llu %15s", &v, word);
+        if (n < 1) {
             v = 0;
         }
+        *exact = n == 2 && strcmp(word, "exact") == 0;
         fclose(f);
     }
     return (uint64_t)v;
 }
 
-static void nv_write(const char *path, uint64_t floor)
+static void nv_write(const char *path, uint64_t floor, int exact)
 {
     char tmp[4096];
     FILE *f;
@@ -398,7 +405,7 @@ static void nv_write(const char *path, uint64_t floor)
     if (f == NULL) {
         return;
     }
-    fprintf(f, "sign_floor %llu\n", (unsigned long long)floor);
+    fprintf(f, "sign_floor %llu%s\n", (unsigned long long)floor, exact ? " exact" : "");
     if (fclose(f) == 0) {
         rename(tmp, path); /* atomic: a crash leaves the old floor, never a torn one */
     }
@@ -485,7 +492,8 @@ int main(int argc, char **argv)
     const char *where = NULL, *key_path = NULL, *nv_path = NULL, *sensors = "rtk";
     sensor_spec_t spec;
     char pty_name[256];
-    int pty_slave = -1;
+    char nv_default[4096];
+    int pty_slave = -1, floor_exact = 0;
     uint64_t floor_saved = 0;
     double next_nv = 1.0;
     int insecure = 0, listen_fd = -1, port = -1, bound = 0, i;
@@ -586,11 +594,24 @@ int main(int argc, char **argv)
     gettimeofday(&tv, NULL); /* signing time: 10 us units since 2015-01-01 00:00:00 UTC */
     cfg.boot_timestamp = ((uint64_t)tv.tv_sec - 1420070400u) * 100000u +
                          (uint64_t)tv.tv_usec / 10u;
-    floor_saved = nv_read(nv_path);
-    if (floor_saved != 0u && floor_saved + 200000u > cfg.boot_timestamp) {
+    if (nv_path == NULL && key_path != NULL) { /* the default: beside the key */
+        if (snprintf(nv_default, sizeof nv_default, "%s.boat%d.floor", key_path,
+                     (int)boat_id) < (int)sizeof nv_default) {
+            nv_path = nv_default;
+        }
+    }
+    floor_saved = nv_read(nv_path, &floor_exact);
+    if (floor_saved != 0u) {
         /* never accept what was seen before the reboot: the floor is written once a second,
-           so frames of the last second before it may be newer; 2 s covers them */
-        cfg.boot_timestamp = floor_saved + 200000u;
+           so frames of the last second before it may be newer; 2 s covers them (a clean
+           stop wrote the exact last one) */
+        uint64_t floor = floor_saved + (floor_exact ? 1u : 200000u);
+        if (floor > cfg.boot_timestamp) {
+            cfg.boot_timestamp = floor;
+        }
+        if (floor_exact) {
+            nv_write(nv_path, floor_saved, 0); /* a crash from now on keeps the margin */
+        }
     }
     cfg.boot_id = random_u32();
     cfg.telemetry_period_ms = (uint32_t)(1000.0 / tel_hz + 0.5);
@@ -733,7 +754,7 @@ int main(int argc, char **argv)
             uint64_t floor = usv_boat_signing_floor(&boat);
             next_nv = now + 1.0;
             if (floor > floor_saved) {
-                nv_write(nv_path, floor);
+                nv_write(nv_path, floor, 0);
                 floor_saved = floor;
             }
         }
@@ -742,8 +763,14 @@ int main(int argc, char **argv)
         }
     }
     (void)last_t;
-    if (nv_path != NULL && usv_boat_signing_floor(&boat) > floor_saved) {
-        nv_write(nv_path, usv_boat_signing_floor(&boat));
+    if (nv_path != NULL) { /* a clean stop: the exact newest timestamp accepted */
+        uint64_t floor = usv_boat_signing_floor(&boat);
+        if (floor < floor_saved) {
+            floor = floor_saved;
+        }
+        if (floor != 0u) {
+            nv_write(nv_path, floor, 1);
+        }
     }
     if (host.fd >= 0) {
         close(host.fd);
