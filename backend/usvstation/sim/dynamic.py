@@ -437,11 +437,12 @@ class DynamicVehicle:
                             line_override=line_override)
 
     def _entering(self, s: Measurement) -> bool:
-        """True where the final approach takes over: the boat is before the ramp end,
-        within the entry distance along the axis, near its approach path and near the
-        end of its own path."""
+        """True where the final approach takes over: the boat is on its path's final
+        straight along the ramp axis (before it, the plan's path keeps it clear of what the
+        station knows and it does not, such as traffic), before the ramp end, within the
+        entry distance and not coming in from the side."""
         if self._path_left(s) > self._straight + STRAIGHT_MARGIN:
-            return False  # (cheap test first: a profile costs a little at every step)
+            return False  # (the cheap test first: a profile costs a little at every step)
         probe = self._new_approach()
         distance, lateral = probe.locate(s)
         prof = probe.profile()
@@ -451,11 +452,8 @@ class DynamicVehicle:
         if not 0.0 < distance <= entry:
             return False
         wanted, _ = prof.at(distance)
-        if abs(lateral) > abs(wanted) + max(3.0, 0.15 * distance):
-            return False  # still coming in from the side: the plan brings it round first
-        # only on the plan's final straight (tested first, above): before it, the plan's
-        # path keeps the boat clear of what the station knows and it does not (traffic)
-        return True
+        # coming in from the side, the plan brings it round first
+        return abs(lateral) <= abs(wanted) + max(3.0, 0.15 * distance)
 
     def _final_straight(self) -> float:
         """Length of the path's final straight: its last legs on the ramp axis (every point
