@@ -19,11 +19,11 @@ cosine of the heading still to turn) and, close to it, keeps its heading and sto
 propellers.
 
 `over_capacity` is true when the boat cannot hold: the estimated drift needs more than
-`capacity` x the top speed through the water, or the boat, having been at its point,
-is more than `radius` (2 m) off it (it clears within half of that), or a current above 60 % of its top speed
-comes from more than 60 deg off the way it must head (it is still turning to meet it and
-drifts meanwhile). The simulated boat reports it in a
-STATUSTEXT and the USV_MISSION_STATE flags.
+`capacity` x the top speed through the water; or the boat, having held its point (at
+rest there), is more than `radius` (2 m) off it (it clears within half of that); or a
+current above 60 % of its top speed comes from more than 60 deg off the way it must
+head (it is still turning to meet it and drifts meanwhile). The simulated boat reports
+it in a STATUSTEXT and the USV_MISSION_STATE flags.
 """
 
 from __future__ import annotations
