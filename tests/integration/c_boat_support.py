@@ -70,8 +70,10 @@ def conformance_argv() -> dict[str, list[str]]:
     lat, lon = frame.to_geodetic(case1.start.x, case1.start.y)
     compass = float(frame.ramp_bearing_deg - case1.start.heading_deg) % 360.0
     assert math.isfinite(compass)
+    # exact sensors, like the Python boat of the rig: the boats are compared on the protocol
     return {"c": [str(exe), "pty", "--lat", f"{float(lat):.9f}", "--lon", f"{float(lon):.9f}",
-                  "--heading-deg", f"{compass:g}", "--telemetry-hz", "5"]}
+                  "--heading-deg", f"{compass:g}", "--telemetry-hz", "5",
+                  "--sensors", "exact"]}
 
 
 def load_dialect() -> Any:

@@ -403,9 +403,10 @@ class ApproachGates:
     def cross_track_limit(self, gate: float, final: bool = False) -> float:
         """Cross-track error allowed at `gate` m: the arrival offset near the ramp,
         widening with the distance left to correct it; in the final phase the crossing
-        offset the boat predicts it cannot take out must stay well inside the tolerance."""
+        offset the boat predicts it cannot take out must stay within the arrival
+        tolerance (a bad contact is 0.2 m farther still)."""
         if final:
-            return 0.5 * self.limits.offset
+            return self.limits.offset
         return self.limits.offset * (0.5 + gate / 4.0)
 
     def check(self, st: ApproachState, nav_ok: bool) -> GateResult | None:

@@ -19,11 +19,11 @@ cosine of the heading still to turn) and, close to it, keeps its heading and sto
 propellers.
 
 `over_capacity` is true when the boat cannot hold: the estimated drift needs more than
-`capacity` x the top speed through the water, or the boat is more than `radius` (2 m)
-off its point (it clears within half of that), or a current above 60 % of its top speed
-comes from more than 60 deg off the way it must head (it is still turning to meet it and
-drifts meanwhile). The simulated boat reports it in a
-STATUSTEXT and the USV_MISSION_STATE flags.
+`capacity` x the top speed through the water; or the boat, having held its point (at
+rest there), is more than `radius` (2 m) off it (it clears within half of that); or a
+current above 60 % of its top speed comes from more than 60 deg off the way it must
+head (it is still turning to meet it and drifts meanwhile). The simulated boat reports
+it in a STATUSTEXT and the USV_MISSION_STATE flags.
 """
 
 from __future__ import annotations
@@ -48,6 +48,7 @@ class StationCommand:
 
 STRONG_CURRENT = 0.6  # of the top speed: a current the boat cannot ride out broadside
 ASTERN_TURN = math.radians(135.0)  # a current this far round behind the bow: met astern
+HELD_SPEED = 0.3  # m/s over ground: at the point and this slow, the boat holds it
 BROADSIDE = math.radians(60.0)  # heading still to turn before the boat meets the current
 
 
@@ -78,6 +79,7 @@ class StationKeeper:
         self.turning_in_strong_current = False
         self._integral = (0.0, 0.0)
         self._last_t: float | None = None
+        self._held = False
 
     def hold_at(self, x: float, y: float) -> None:
         if not (math.isfinite(x) and math.isfinite(y)):
@@ -85,6 +87,7 @@ class StationKeeper:
         self.point = (x, y)
         self._integral, self._last_t, self.off_point = (0.0, 0.0), None, False
         self.turning_in_strong_current = False
+        self._held = False  # it has been at the point since hold_at
 
     @property
     def over_capacity(self) -> bool:
@@ -100,10 +103,13 @@ class StationKeeper:
         self._last_t = t
         dx, dy = self.point[0] - pose.x, self.point[1] - pose.y
         dist = math.hypot(dx, dy)
-        if dist > self.radius:
-            self.off_point = True
-        elif dist < 0.5 * self.radius:
+        if dist < 0.5 * self.radius:
             self.off_point = False
+            # it holds once it is there and at rest over ground (coming to the point under
+            # way, its overshoot is not the current's doing)
+            self._held = self._held or getattr(pose, "sog", 0.0) < HELD_SPEED
+        elif dist > self.radius and self._held:
+            self.off_point = True
         ix, iy = self._integral
         if dist < self.radius:  # integrate near the point only (no wind-up out of reach)
             ix, iy = ix + dx * dt, iy + dy * dt

@@ -155,6 +155,7 @@ class DynamicVehicle:
         self._held_from: str | None = None  # the go-around phase a HOLD interrupted
         self._back_heading = heading  # the heading a go-around backs away on
         self._path: Trajectory | None = None  # the timed path being flown
+        self._straight = 0.0  # length of its final straight along the ramp axis
         self._tau = 0.0  # mission time
         self._pending = 0.0  # boat time not yet simulated (less than one control period)
         self._next_guidance = 0.0
@@ -240,6 +241,7 @@ class DynamicVehicle:
             accel=self.accel, overrun=OVERRUN, path_check=self.path_check,
         )
         self._path = traj
+        self._straight = self._final_straight()
         self._tau, self._complete, self._command = 0.0, False, None
         self._approach, self._escape, self.go_around = None, None, None
         if self.gates is not None:
@@ -435,9 +437,12 @@ class DynamicVehicle:
                             line_override=line_override)
 
     def _entering(self, s: Measurement) -> bool:
-        """True where the final approach takes over: the boat is before the ramp end,
-        within the entry distance along the axis, near its approach path and near the
-        end of its own path."""
+        """True where the final approach takes over: the boat is on its path's final
+        straight along the ramp axis (before it, the plan's path keeps it clear of what the
+        station knows and it does not, such as traffic), before the ramp end, within the
+        entry distance and not coming in from the side."""
+        if self._path_left(s) > self._straight + STRAIGHT_MARGIN:
+            return False  # (the cheap test first: a profile costs a little at every step)
         probe = self._new_approach()
         distance, lateral = probe.locate(s)
         prof = probe.profile()
@@ -447,11 +452,8 @@ class DynamicVehicle:
         if not 0.0 < distance <= entry:
             return False
         wanted, _ = prof.at(distance)
-        if abs(lateral) > abs(wanted) + max(3.0, 0.15 * distance):
-            return False  # still coming in from the side: the plan brings it round first
-        # only on the plan's final straight: before it, the plan's path is what keeps the
-        # boat clear of what the station knows and the boat does not (traffic, re-plans)
-        return self._path_left(s) <= self._final_straight() + STRAIGHT_MARGIN
+        # coming in from the side, the plan brings it round first
+        return abs(lateral) <= abs(wanted) + max(3.0, 0.15 * distance)
 
     def _final_straight(self) -> float:
         """Length of the path's final straight: its last legs on the ramp axis (every point
