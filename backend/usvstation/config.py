@@ -63,8 +63,9 @@ class Settings(BaseSettings):
                             "browsers reach it at /3d/)")
     sim_speed: float = Field(1.0, gt=0.0, le=100.0, description="simulated boat time runs "
                              "this many times faster")
-    sim_gnss_error: bool = Field(True, description="the simulated boat's GNSS fixes carry "
-                                 "a wandering bias (0.8 m) and white error (0.4 m); off: exact")
+    sim_gnss_error: bool = Field(True, description="the simulated boat navigates on RTK-class "
+                                 "sensors (2 cm GNSS, compass bias and noise; sim/sensors.py "
+                                 "'rtk'); off: on exact ones")
     cors_origins: list[str] = Field(default_factory=list, description="origins allowed by "
                                     "CORS for the HTTP API (comma-separated)")
     plan_workers: int = Field(2, ge=1, le=32, description="plan worker processes")

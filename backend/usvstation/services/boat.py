@@ -190,7 +190,7 @@ class BoatService:
                                  "time")
         link = self._require_link()
         report = link.report
-        if report is not None and report.state in ("HOLD", "FAILSAFE"):
+        if report is not None and report.state in ("HOLD", "FAILSAFE", "GO_AROUND"):
             raise Conflict(f"the boat is {report.state}: RESUME or ABORT first")
         running = report is not None and report.state == "RUNNING"
         if not running:

@@ -1,5 +1,5 @@
-"""Runs: a run is open while the boat reports RUNNING/HOLD/FAILSAFE with a mission; its
-telemetry goes into the run, and it closes with the mission's final state."""
+"""Runs: a run is open while the boat reports RUNNING, HOLD, FAILSAFE or GO_AROUND with a
+mission; its telemetry goes into the run, and it closes with the mission's final state."""
 
 from __future__ import annotations
 
