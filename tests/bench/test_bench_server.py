@@ -12,11 +12,11 @@ def test_quick_server_bench():
     assert ws["count"] > 0 and ws["messages_per_client_per_s"] > 0
     assert 0 < ws["p50_ms"] <= ws["p99_ms"] <= ws["max_ms"]
     hp = out["health_under_planning"]
-    assert hp["plans_at_once"] == 4 and hp["plans_completed"] >= 4 and hp["count"] > 20
-    assert hp["running_median"] >= 2
+    assert hp["plans_at_once"] == 4 and hp["plans_completed"] >= 1 and hp["count"] > 5
+    assert hp["running_median"] >= 1
     ab = out["abuse"]
     assert ab["body_50mb_no_token"]["statuses"] == [401]
-    assert ab["half_open_connections"] == 1000 and ab["health_during_half_open"]["count"] > 20
+    assert ab["half_open_connections"] == 300 and ab["health_during_half_open"]["count"] > 5
     assert ab["health_errors"] == 0 and ab["loop_lag_worst_ms"] >= 0
     worst = (out["loop_lag_worst_ms_websocket"], out["loop_lag_worst_ms_planning"],
              ab["loop_lag_worst_ms"])
@@ -32,7 +32,7 @@ def test_quick_server_bench():
     assert set(out["viewer_pages"]["statuses"]) == {"200"}
     assert out["half_open"]["requests"] > 256  # connections made (beyond the per-client cap)
     start = out["link_start"]
-    assert len(start["first_heartbeat_ms"]) == 2 and len(start["restart_silence_ms"]) == 2
+    assert len(start["first_heartbeat_ms"]) == 1 and len(start["restart_silence_ms"]) == 1
     assert out["link_heartbeat_gap_worst_during_floods_ms"] >= 375.0
     assert out["link_heartbeat_gap_worst_ms"] == max(
         out[k]["link_heartbeat_gap_ms"]["worst_last_minute"]

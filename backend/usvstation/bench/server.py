@@ -30,6 +30,7 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import datetime as dt
+import functools
 import os
 import socket
 import statistics
@@ -364,12 +365,13 @@ def _open_path_load(url: str, stop: threading.Event, out: list[int]) -> None:
             i += 1
 
 
-def _viewer_page_load(url: str, stop: threading.Event, out: list[int]) -> None:
+def _viewer_page_load(url: str, stop: threading.Event, out: list[int],
+                      rows: int = PAGE_ROWS) -> None:
     with httpx.Client(base_url=url, timeout=120,
                       headers={"Authorization": f"Bearer {VIEWER}"}) as c:
         while not stop.is_set():
             try:
-                with c.stream("GET", "/api/telemetry", params={"limit": PAGE_ROWS}) as r:
+                with c.stream("GET", "/api/telemetry", params={"limit": rows}) as r:
                     size = sum(len(piece) for piece in r.iter_bytes())
                 out.append(r.status_code if size > 0 else 0)
             except httpx.HTTPError:
@@ -427,44 +429,54 @@ def _half_open_load(url: str, count: int, stop: threading.Event, out: list[int])
             s.close()
 
 
-def flood(name: str, seconds: float, clients: int,
-          load: Callable[[str, threading.Event, list[int]], None], *,
-          prepare: Callable[[Path], None], what: str) -> dict[str, Any]:
-    """One flood on a station flying a mission: the boat's states, the link's heartbeat gap,
-    health latency and the station's memory."""
+Load = Callable[[str, threading.Event, list[int]], None]
+
+
+def flood(name: str, seconds: float, clients: int, load: Load, *,
+          prepare: Callable[[Path], None], what: str,
+          settle_s: float = SETTLE_S) -> dict[str, Any]:
+    """One flood on a station of its own flying a mission: the boat's states, the link's
+    heartbeat gap, health latency and the station's memory."""
     station = Station({}, prepare=prepare)
     try:
         fly_mission(station.url)
-        pid = station.proc.pid
-        prober = _Prober(station.url)
-        prober.start()
-        pause(1.0)
-        prober.take()
-        baseline = rss_mb(pid)
-        watch = _Watch(station.url, pid)
-        watch.start()
-        watch.ready.wait(60)  # like the operator's console: connected before the flood
-        stop, out = threading.Event(), []
-        threads = [threading.Thread(target=load, args=(station.url, stop, out), daemon=True)
-                   for _ in range(clients)]
-        began = REAL_CLOCK.unix()
-        for t in threads:
-            t.start()
-        pause(seconds)
-        stop.set()
-        for t in threads:
-            t.join(120)
-        ended = REAL_CLOCK.unix()
-        during = prober.take()
-        pause(SETTLE_S)
-        after = rss_mb(pid)
-        watch.stop.set()
-        watch.join()
-        prober.stop.set()
-        prober.join()
-        health = httpx.get(station.url + "/api/health", timeout=30).json()
+        return measure_flood(station, seconds, clients, load, what=what, settle_s=settle_s)
     finally:
         station.close()
+
+
+def measure_flood(station: Station, seconds: float, clients: int, load: Load, *, what: str,
+                  settle_s: float = SETTLE_S) -> dict[str, Any]:
+    """One flood on a station already flying a mission (`flood`, or the quick bench's one
+    station for all three)."""
+    pid = station.proc.pid
+    prober = _Prober(station.url)
+    prober.start()
+    pause(1.0)
+    prober.take()
+    baseline = rss_mb(pid)
+    watch = _Watch(station.url, pid)
+    watch.start()
+    watch.ready.wait(60)  # like the operator's console: connected before the flood
+    stop, out = threading.Event(), []
+    threads = [threading.Thread(target=load, args=(station.url, stop, out), daemon=True)
+               for _ in range(clients)]
+    began = REAL_CLOCK.unix()
+    for t in threads:
+        t.start()
+    pause(seconds)
+    stop.set()
+    for t in threads:
+        t.join(120)
+    ended = REAL_CLOCK.unix()
+    during = prober.take()
+    pause(settle_s)
+    after = rss_mb(pid)
+    watch.stop.set()
+    watch.join()
+    prober.stop.set()
+    prober.join()
+    health = httpx.get(station.url + "/api/health", timeout=30).json()
     statuses: dict[str, int] = {}
     for code in out:
         statuses[str(code)] = statuses.get(str(code), 0) + 1
@@ -571,7 +583,12 @@ def run_server_bench(quick: bool = False,
                      base_port: int | None = None) -> dict[str, Any]:
     global BASE_PORT
     BASE_PORT = base_port
-    seconds = 5.0 if quick else 30.0
+    # quick: a smoke test of every measure (2 s phases, fewer connections), not figures
+    seconds = 2.0 if quick else 30.0
+    half_open = 300 if quick else 1000
+    half_open_flood = 400 if quick else 2100
+    page_rows = 10_000 if quick else PAGE_ROWS
+    settle_s = 1.0 if quick else SETTLE_S
     command = "usv-station bench server --json" + (" --quick" if quick else "") + \
         (f" --base-port {base_port}" if base_port is not None else "")
     out: dict[str, Any] = {"command": command, "machine": machine_info(),
@@ -596,25 +613,38 @@ def run_server_bench(quick: bool = False,
         out["health_under_planning"]["link_heartbeat_gap_ms"] = health["link_heartbeat_gap_ms"]
     finally:
         station.close()
-    progress("station under abuse: 50 MB bodies without a token, 1000 half-open connections")
+    progress(f"station under abuse: 50 MB bodies without a token, {half_open} half-open "
+             "connections")
     station = Station({})
     try:
-        out["abuse"] = abuse(station.url, 1000, seconds)
+        out["abuse"] = abuse(station.url, half_open, seconds)
     finally:
         station.close()
-    progress("open-path flood: 16 clients, 1 MiB JSON to /nope, /, /docs, /api/health")
-    out["open_path_flood"] = flood("open_path_flood", seconds, 16, _open_path_load,
-                                   prepare=prepare_data(), what="1 MiB JSON bodies, open paths")
-    progress("viewer pages: 6 clients, 100,000-row telemetry pages")
-    out["viewer_pages"] = flood("viewer_pages", seconds, 6, _viewer_page_load,
-                                prepare=prepare_data(PAGE_ROWS + 10_000),
-                                what="GET /api/telemetry?limit=100000, viewer token")
-    progress("half-open: 2100 connections, renewed as the station closes them")
-    out["half_open"] = flood("half_open", seconds, 1,
-                             lambda url, stop, o: _half_open_load(url, 2100, stop, o),
-                             prepare=prepare_data(), what="2100 half-open connections")
+    floods = {
+        "open_path_flood": (16, _open_path_load, "1 MiB JSON bodies, open paths"),
+        "viewer_pages": (6, functools.partial(_viewer_page_load, rows=page_rows),
+                         f"GET /api/telemetry?limit={page_rows}, viewer token"),
+        "half_open": (1, lambda url, stop, o: _half_open_load(url, half_open_flood, stop, o),
+                      f"{half_open_flood} half-open connections"),
+    }
+    if quick:  # one station flying one mission takes the three floods in turn
+        progress("floods: open paths, viewer pages, half-open, on one station")
+        station = Station({}, prepare=prepare_data(page_rows + 10_000))
+        try:
+            fly_mission(station.url)
+            for name, (clients, load, what) in floods.items():
+                out[name] = measure_flood(station, seconds, clients, load, what=what,
+                                          settle_s=settle_s)
+        finally:
+            station.close()
+    else:
+        for name, (clients, load, what) in floods.items():
+            progress(f"{name}: {what}, {clients} client(s)")
+            rows = page_rows + 10_000 if name == "viewer_pages" else 0
+            out[name] = flood(name, seconds, clients, load, prepare=prepare_data(rows),
+                              what=what, settle_s=settle_s)
     progress("link start: serve on an external boat's port, first heartbeat and restarts")
-    out["link_start"] = link_start(2 if quick else 5)
+    out["link_start"] = link_start(1 if quick else 5)
     # each station's worst since its start (start-up included): the whole bench's worst
     out["loop_lag_worst_ms"] = max(out["loop_lag_worst_ms_websocket"],
                                    out["loop_lag_worst_ms_planning"],
