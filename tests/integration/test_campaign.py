@@ -81,9 +81,9 @@ def test_ray_local_trial_gives_the_pool_lines(tmp_path, local_ray):
     from usvstation.trial.run import run_trial
 
     spec = tmp_path / "trial.toml"
-    spec.write_text('name = "tiny"\nepisodes = 2\nseed = 3\nbase = ["case2"]\n'
-                    'time_limit_s = 200\n[families]\ntraffic = ["none", "crossing"]\n'
-                    'current_speed = [0.0, 0.2]\n', encoding="utf-8")
+    spec.write_text('name = "tiny"\nepisodes = 2\nseed = 3\nbase = ["case3"]\n'
+                    'time_limit_s = 120\n[families]\ncurrent_speed = [0.0, 0.2]\n',
+                    encoding="utf-8")
     run_trial(spec, tmp_path / "pool", workers=1, progress=False)
     assert run_trial(spec, tmp_path / "ray", ray="local", workers=2, progress=False)["ran"] == 2
 
