@@ -132,11 +132,8 @@ eq12_batch = njit(cache=True, nogil=True)(_eq12_batch) if AVAILABLE else None
 
 
 def warm() -> bool:
-    """Compile (or load from numba's cache) the kernel now, e.g. once per plan worker, so
-    that the first plan does not pay for it; False without numba."""
-    if eq12_batch is None:
-        return False
-    z2, z1 = np.zeros((3, 1)), np.zeros((2, 1))
-    eq12_batch(z2, z2, np.ones((3, 1)), z2, np.ones((2, 1)), z1, np.zeros(1, dtype=np.bool_),
-               np.zeros(0, np.int64), np.zeros((0, 5)), np.ones(7), np.ones(6))
-    return True
+    """Load (or compile) every kernel of the planner now, e.g. once per plan worker, so that
+    the first plan does not pay for it; False without numba (planning/warm.py)."""
+    from usvstation.planning.warm import warm as warm_all  # here: warm.py plans with the IGA
+
+    return warm_all()

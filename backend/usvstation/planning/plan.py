@@ -21,6 +21,7 @@ from usvstation.planning.problem import Problem, sweep_moving
 from usvstation.planning.smoothing import smooth_path
 from usvstation.planning.start import Prefix, needs_prefix, prefixes, start_state
 from usvstation.planning.validate import current_vector, hull_clearance, plan_violations
+from usvstation.planning.warm import warm
 from usvstation.planning.xyt import ObstacleField
 from usvstation.scenario import Scenario, scenario_at
 from usvstation.scenario.options import IGAOptions
@@ -52,6 +53,7 @@ def plan_scenario(
     opts = scenario.planner_options(**overrides)
     check_memory(scenario, opts)
     budget = Budget(opts.evaluation_budget, opts.time_budget_s, clock, started)
+    budget.excluding(warm)  # the kernels' first load in this process (a no-op after it)
     first: tuple[Problem, IGAResult] | None = None
     reasons: list[str] = []
     direct = not needs_prefix(scenario, opts)

@@ -1,0 +1,34 @@
+"""Load every compiled kernel of the IGA once per process (or compile it, the first time in
+an environment: numba's `cache=True` keeps the machine code on disk).
+
+`warm()` plans a small recovery (one moving obstacle, a boat under way, a current) with a
+tiny population, which calls each kernel with the argument types of a real plan.
+`plan_scenario` calls it before it plans, outside the plan's budget (planning/budget.py
+`Budget.excluding`), and a plan worker calls it when it starts.
+"""
+
+from __future__ import annotations
+
+import functools
+
+from usvstation.planning import kernel
+
+
+@functools.cache
+def warm() -> bool:
+    """Load (or compile) the kernels now; False without numba. Only the first call works."""
+    if not kernel.AVAILABLE:
+        return False
+    from usvstation.planning.iga import run_iga  # here: iga imports the kernels' modules
+    from usvstation.planning.problem import Problem
+    from usvstation.scenario import parse_scenario
+
+    scenario = parse_scenario({
+        "name": "warm-up", "start": {"x": 40.0, "y": 6.0, "heading_deg": 180.0, "speed": 1.0},
+        "goal": {"x": 0.0, "y": 0.0},
+        "obstacles": [{"x": 20.0, "y": -4.0, "radius": 1.0, "vx": 0.0, "vy": 0.3}],
+        "environment": {"current_speed": 0.2, "current_dir_deg": 90.0},
+    })
+    opts = scenario.planner_options(seed=1, population=8, generations_max=2, smoothing=False)
+    run_iga(Problem.from_scenario(scenario), opts)
+    return True
