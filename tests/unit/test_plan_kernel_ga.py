@@ -1,6 +1,8 @@
 """The IGA's compiled generation (planning/kernel_ga.py) agrees bit for bit with the NumPy
 operators it replaces, on random problems, populations and draws."""
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 from hypothesis import assume, given, settings
@@ -9,7 +11,7 @@ from hypothesis import strategies as st
 from usvstation.bench.scenarios import HIDDEN_FAMILIES, random_recovery, random_transit
 from usvstation.planning import iga, kernel_ga
 from usvstation.planning.encoding import GeneLayout, InfeasibleProblem
-from usvstation.planning.fitness import Evaluator
+from usvstation.planning.fitness import Evaluator, first_turn, first_turn_of
 from usvstation.planning.preheat import PreheatReport, preheat, random_levels
 from usvstation.planning.problem import Problem
 from usvstation.scenario import load_scenario
@@ -46,15 +48,24 @@ def _population(layout, problem, opts, rng, n):
 @settings(max_examples=40, deadline=None)
 @given(family=st.sampled_from(FAMILIES), seed=st.integers(0, 10_000))
 def test_decode_equals_decode_and_map(family, seed):
-    _, _, layout = _setup(family, seed)
+    problem, _, layout = _setup(family, seed)
     rng = np.random.default_rng(seed)
     codes = layout.bits_to_codes(rng.integers(0, 2, size=(37, layout.n_bits), dtype=np.uint8))
-    tables = kernel_ga.LayoutTables.of(layout)
+
+    moving = replace(problem, start_heading=1.0)  # the first-turn gate, also for a boat at rest
+
+    def first(dx, dy):
+        return first_turn_of(np.arctan2(dy, dx), layout.start_speed, moving) > moving.turn_max
+
+    tables = kernel_ga.LayoutTables.of(layout, first)
+    assert tables.first_table.size or layout.gene_count[0] * layout.gene_count[1] > 1 << 16
     want = layout.decode_codes(codes)
-    x, y, v, t, seg, dx, dy = kernel_ga.decode(codes, *tables.mapping())
+    x, y, v, t, seg, dx, dy, first_bad = kernel_ga.decode(codes, *tables.mapping())
     for got, ref in ((x, want.x), (y, want.y), (v, want.v), (t, want.t), (seg, want.seg_len),
                      (dx, want.seg_dx), (dy, want.seg_dy)):
         np.testing.assert_array_equal(got, ref.T)
+    if tables.first_table.size:
+        np.testing.assert_array_equal(first_bad, first_turn(want, moving) > moving.turn_max)
     levels = layout.codes_to_levels(codes)
     np.testing.assert_array_equal(kernel_ga.codes_to_levels(codes, *tables.coding()), levels)
     np.testing.assert_array_equal(kernel_ga.levels_to_codes(levels, *tables.coding()),

@@ -232,6 +232,7 @@ class _Compiled:
     evaluator: Evaluator
     tables: LayoutTables
     eq12_args: tuple[np.ndarray, ...] | None
+    first_untabled: bool  # the first-turn gate applies and is computed per path
 
     @classmethod
     def of(cls, layout: GeneLayout, evaluator: Evaluator, problem: Problem,
@@ -239,20 +240,24 @@ class _Compiled:
         """The compiled route for this run, or None without numba."""
         if not kernel_ga.AVAILABLE:
             return None
-        return cls(layout, problem, opts, evaluator, LayoutTables.of(layout),
-                   evaluator._kernel_args())
+        first = None
+        if problem.start_heading is not None:
+            def first(dx: np.ndarray, dy: np.ndarray) -> np.ndarray:
+                h0 = np.arctan2(dy, dx)
+                return first_turn_of(h0, layout.start_speed, problem) > problem.turn_max
+        tables = LayoutTables.of(layout, first)
+        return cls(layout, problem, opts, evaluator, tables, evaluator._kernel_args(),
+                   problem.start_heading is not None and tables.first_table.shape[0] == 0)
 
     def fitness(self, codes: np.ndarray) -> np.ndarray:
         """`Evaluator.fitness` of the decoded codes (one chunk)."""
         if self.eq12_args is None:  # EG3's linear fitness: the NumPy evaluator
             return self.evaluator.fitness(self.layout.decode_codes(codes))
-        x, y, v, t, seg, dx, dy = kernel_ga.decode(codes, *self.tables.mapping())
+        x, y, v, t, seg, dx, dy, first_bad = kernel_ga.decode(codes, *self.tables.mapping())
         heading = np.arctan2(dy, dx)
-        problem = self.problem
-        if problem.start_heading is not None:
+        if self.first_untabled:  # too many first waypoints for a table: per path
+            problem = self.problem
             first_bad = first_turn_of(heading[0], v[0], problem) > problem.turn_max
-        else:
-            first_bad = self.evaluator._no_flags(codes.shape[0])
         return eq12_batch(x, y, v, t, seg, heading, first_bad, *self.eq12_args)
 
     def generation(
@@ -323,8 +328,11 @@ def _local_draws(layout: GeneLayout, rng: np.random.Generator, n_parents: int,
 
 
 def _elite_mean(fit: np.ndarray, n_elite: int) -> float:
+    """Mean fitness of the elite group: np.mean of the k largest, without its wrapper."""
     k = max(n_elite, 1)
-    return float(np.mean(np.partition(fit, -k)[-k:]))
+    top = fit.copy()
+    top.partition(fit.shape[0] - k)
+    return float(np.add.reduce(top[-k:]) / k)
 
 
 def _offspring(layout: GeneLayout, pop: _Population, n: int, opts: IGAOptions, pm: float,

@@ -28,6 +28,7 @@ differently from libm: the kernels only do arithmetic on them. Compiled with
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -53,9 +54,15 @@ class LayoutTables:
     lo: np.ndarray  # (G,)
     ends: np.ndarray  # (start x, start y, start speed, goal x, goal y)
     y_res: float
+    first_table: np.ndarray  # (x levels, y levels) of the first waypoint: first turn too wide
 
     @classmethod
-    def of(cls, layout: GeneLayout) -> LayoutTables:
+    def of(cls, layout: GeneLayout,
+           first_turn: Callable[[np.ndarray, np.ndarray], np.ndarray] | None = None,
+           ) -> LayoutTables:
+        """The tables of `layout`; with `first_turn` (the first-turn gate of first legs
+        (dx, dy)) its value for every first waypoint, when there are at most
+        `FIRST_TABLE_MAX` of them."""
         base, res, lo = layout._affine
         i64 = np.int64
         return cls(
@@ -69,6 +76,7 @@ class LayoutTables:
             ends=np.array([layout.start[0], layout.start[1], layout.start_speed,
                            layout.goal[0], layout.goal[1]], dtype=np.float64),
             y_res=float(layout.y_res),
+            first_table=_first_table(layout, first_turn),
         )
 
     def coding(self) -> tuple:
@@ -77,7 +85,30 @@ class LayoutTables:
 
     def mapping(self) -> tuple:
         """The arguments of `decode` after the codes."""
-        return (*self.coding(), self.base, self.res, self.lo, self.ends)
+        return (*self.coding(), self.base, self.res, self.lo, self.ends, self.first_table)
+
+
+FIRST_TABLE_MAX = 1 << 16
+
+
+def _first_table(layout: GeneLayout,
+                 first_turn: Callable[[np.ndarray, np.ndarray], np.ndarray] | None,
+                 ) -> np.ndarray:
+    """first_turn(dx, dy) of the first leg through each (x level, y level) of the first
+    waypoint (decode-and-map's arithmetic): the gate depends on the first leg alone. Empty
+    without `first_turn` or with more than `FIRST_TABLE_MAX` first waypoints."""
+    nx, ny = int(layout.gene_count[0]), int(layout.gene_count[1])
+    if first_turn is None or nx * ny > FIRST_TABLE_MAX:
+        return np.zeros((0, 0), dtype=np.bool_)
+    base, res, lo = layout._affine
+    xl, yl = np.divmod(np.arange(nx * ny, dtype=np.int64), ny)
+    pos_y = yl + base[1]
+    if layout.cone_gene == 1:  # one intermediate waypoint: its y lies in the arrival cone
+        pos_y = pos_y - layout.cone_m[xl]
+    x1 = (xl + base[0]) * res[0] + lo[0]
+    y1 = pos_y * res[1] + lo[1]
+    bad = first_turn(x1 - layout.start[0], y1 - layout.start[1])
+    return np.ascontiguousarray(bad.reshape(nx, ny))
 
 
 def _codes_to_levels(codes: np.ndarray, gene_bits: np.ndarray, gene_count: np.ndarray,
@@ -126,13 +157,19 @@ def _levels_to_codes(levels: np.ndarray, gene_bits: np.ndarray, gene_count: np.n
 
 def _decode(codes: np.ndarray, gene_bits: np.ndarray, gene_count: np.ndarray, cone_gene: int,
             cone_m: np.ndarray, base: np.ndarray, res: np.ndarray, lo: np.ndarray,
-            ends: np.ndarray) -> tuple:  # pragma: no cover
+            ends: np.ndarray, first_table: np.ndarray) -> tuple:  # pragma: no cover
     """`GeneLayout.decode_codes` as (N, P) arrays: x, y, v, t, then the (N - 1, P) segment
-    lengths, dx and dy (eq. 11: dT = 2 L / (v_i + v_i+1), t accumulated in order)."""
+    lengths, dx and dy (eq. 11: dT = 2 L / (v_i + v_i+1), t accumulated in order), and
+    each path's first-turn flag looked up in `first_table` (x level, y level of the first
+    waypoint; all False when the table is empty)."""
     p, g = codes.shape
     n_mid = (g - 1) // 3
     n = n_mid + 2
     levels = codes_to_levels(codes, gene_bits, gene_count, cone_gene, cone_m)
+    first_bad = np.zeros(p, np.bool_)
+    if first_table.shape[0] > 0:
+        for i in range(p):
+            first_bad[i] = first_table[levels[i, 0], levels[i, 1]]
     x = np.empty((n, p))
     y = np.empty((n, p))
     v = np.empty((n, p))
@@ -166,7 +203,7 @@ def _decode(codes: np.ndarray, gene_bits: np.ndarray, gene_count: np.ndarray, co
             length = math.hypot(ddx, ddy)
             dx[s, i], dy[s, i], seg[s, i] = ddx, ddy, length
             t[s + 1, i] = t[s, i] + 2.0 * length / (v[s, i] + v[s + 1, i])
-    return x, y, v, t, seg, dx, dy
+    return x, y, v, t, seg, dx, dy, first_bad
 
 
 def _breed(codes: np.ndarray, fit: np.ndarray, order: np.ndarray, n_children: int,

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 from dataclasses import replace
 from typing import Any
 
@@ -58,11 +59,7 @@ def plan_scenario(
     reasons: list[str] = []
     direct = not needs_prefix(scenario, opts)
     for margin, warning in clearance_margins(scenario, opts.clearance_fallback):
-        starts: list[Prefix | None] = [None] if direct else []
-        starts += prefixes(scenario, opts, margin)
-        if not starts:  # no run-out needed after all (e.g. a hull already crabbing right)
-            starts = [None]
-        for prefix in starts:
+        for prefix in _starts(scenario, opts, margin, direct):
             state = start_state(scenario) if prefix is None else prefix.end
             problem = Problem.from_scenario(scenario, margin, state=state)
             try:
@@ -102,6 +99,20 @@ def plan_scenario(
         raise NoFeasiblePlan(f"{head}: " + (reasons[0] if reasons else
                              "no collision-free way to turn the boat towards the goal"))
     raise NoFeasiblePlan(f"{head}: {explain_infeasible(*first)}")
+
+
+def _starts(scenario: Scenario, opts: IGAOptions, margin: float,
+            direct: bool) -> Iterator[Prefix | None]:
+    """Where the IGA's leg begins, in the order tried: the start itself (None) when the boat
+    can leave it directly, then the run-outs (computed only once the direct plan failed);
+    the start itself also when no run-out is needed after all (a hull already crabbing
+    right)."""
+    if direct:
+        yield None
+    runouts = prefixes(scenario, opts, margin)
+    if not runouts and not direct:
+        yield None
+    yield from runouts
 
 
 def replan_from(
