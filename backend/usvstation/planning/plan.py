@@ -119,8 +119,8 @@ def replan_from(
     scenario: Scenario, x: float, y: float, heading_deg: float, speed: float, t: float,
     planner: str = "iga", seed: int | None = None, **overrides: Any,
 ) -> Plan:
-    """Plan from a boat under way (ramp frame position, hull heading, speed through the water)
-    at `t` s after the scenario's t = 0: obstacles are propagated to that instant (eq. 8)
+    """Plan from a boat under way (ramp frame position, hull heading, speed over ground) at
+    `t` s after the scenario's t = 0: obstacles are propagated to that instant (eq. 8)
     and the plan's t = 0 is that instant."""
     at_now = scenario_at(scenario, x, y, heading_deg, speed, t)
     return plan_scenario(at_now, planner=planner, seed=seed, **overrides)
@@ -218,6 +218,13 @@ def build_plan(
         },
     }
     plan = Plan("iga", scenario.name, opts.seed, waypoints, metrics, sections=sections)
+    own = float(np.clip(scenario.start.speed, scenario.vessel.speed_min,
+                        scenario.vessel.speed_max))
+    if abs(float(v[0]) - own) > 1e-9:
+        plan = plan.warned(
+            f"start speed {scenario.start.speed:g} m/s over ground: the boat cannot keep it "
+            f"on its first leg in this current (through the water within [speed_min, "
+            f"speed_max]); planned from {float(v[0]):.3g} m/s")
     if opts.smoothing:
         smoothed = smooth_path(xs, ys, t, hull_field(scenario))
         if smoothed["collision_free"]:
