@@ -135,6 +135,7 @@ class _Grower:
                                    (problem.speed_min * (1 - 1e-6)) ** 2,
                                    (problem.speed_max * (1 + 1e-6)) ** 2])
             self.goal = np.asarray(layout.goal, dtype=np.float64)
+            self.no_aim = np.zeros(4 * 2 * opts.population)  # enough for any draw
         self.v2min, self.v2max = problem.speed_min**2, problem.speed_max**2
         last = layout.n_mid - 1
         self.run_in = float(layout.x_of(layout.x_count[last] // 2, last))
@@ -266,7 +267,7 @@ class _Grower:
         key_rand = rng.random((n, c))
         state = walk.state
         if wide:
-            aim = offset[:, 0]  # unused
+            aim = self.no_aim[:n]  # unused when wide
         else:
             gx, gy = float(lay.goal[0]), float(lay.goal[1])
             aim = np.arctan2(*kp.aim_args(state, idx, lay.cone_tan is None or last, gx, gy,

@@ -2,7 +2,8 @@
 an environment: numba's `cache=True` keeps the machine code on disk).
 
 `warm()` plans a small recovery (one moving obstacle, a boat under way, a current) with a
-tiny population, which calls each kernel with the argument types of a real plan.
+tiny population and finishes and checks the plan (smoothing, clearances), which calls each
+kernel with the argument types of a real plan.
 `plan_scenario` calls it before it plans, outside the plan's budget (planning/budget.py
 `Budget.excluding`), and a plan worker calls it when it starts.
 """
@@ -12,6 +13,7 @@ from __future__ import annotations
 import functools
 
 from usvstation.planning import kernel
+from usvstation.planning.budget import Budget
 
 
 @functools.cache
@@ -19,8 +21,10 @@ def warm() -> bool:
     """Load (or compile) the kernels now; False without numba. Only the first call works."""
     if not kernel.AVAILABLE:
         return False
-    from usvstation.planning.iga import run_iga  # here: iga imports the kernels' modules
+    from usvstation.planning.iga import run_iga  # here: iga and plan import this module
+    from usvstation.planning.plan import build_plan
     from usvstation.planning.problem import Problem
+    from usvstation.planning.validate import plan_violations
     from usvstation.scenario import parse_scenario
 
     scenario = parse_scenario({
@@ -29,6 +33,8 @@ def warm() -> bool:
         "obstacles": [{"x": 20.0, "y": -4.0, "radius": 1.0, "vx": 0.0, "vy": 0.3}],
         "environment": {"current_speed": 0.2, "current_dir_deg": 90.0},
     })
-    opts = scenario.planner_options(seed=1, population=8, generations_max=2, smoothing=False)
-    run_iga(Problem.from_scenario(scenario), opts)
+    opts = scenario.planner_options(seed=1, population=8, generations_max=2)
+    problem = Problem.from_scenario(scenario)
+    result = run_iga(problem, opts, budget=Budget(None, 3600.0))  # compiling is slow
+    plan_violations(build_plan(scenario, problem, opts, result).to_document(), scenario)
     return True
