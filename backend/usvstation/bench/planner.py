@@ -68,6 +68,9 @@ def run_planner_bench(
         "baseline": {"library": "deap and pymoo", "seeds": deap_seeds, "max_generations": deap_max,
                      "runs": []},
     }
+    from usvstation.planning import kernel
+
+    kernel.warm()  # once, as a plan worker does: the plan times below are plans alone
     ablation_rows = []
     for scenario in scenarios:
         progress(f"planning {scenario.name} with {len(seed_list)} seeds")
