@@ -4,8 +4,9 @@ an environment: numba's `cache=True` keeps the machine code on disk).
 `warm()` plans a small recovery (one moving obstacle, a boat under way, a current) with a
 tiny population and finishes and checks the plan (smoothing, clearances), which calls each
 kernel with the argument types of a real plan.
-`plan_scenario` calls it before it plans, outside the plan's budget (planning/budget.py
-`Budget.excluding`), and a plan worker calls it when it starts.
+`plan_scenario` calls it before it plans, and a plan worker when it starts. Loading from the
+cache counts in a plan's budget like the imports do; compiling (`compiled()`: numba missed
+its cache) does not (planning/budget.py `Budget.excluding`).
 """
 
 from __future__ import annotations
@@ -38,3 +39,14 @@ def warm() -> bool:
     result = run_iga(problem, opts, budget=Budget(None, 3600.0))  # compiling is slow
     plan_violations(build_plan(scenario, problem, opts, result).to_document(), scenario)
     return True
+
+
+def compiled() -> bool:
+    """True when a kernel was compiled in this process (numba missed its cache), not
+    loaded: the first run in an environment."""
+    from usvstation.planning import kernel_ga, kernel_geom, kernel_preheat
+
+    dispatchers = [getattr(m, name) for m in (kernel, kernel_ga, kernel_geom, kernel_preheat)
+                   for name in dir(m)]
+    return any(sum(d.stats.cache_misses.values()) for d in dispatchers
+               if hasattr(d, "stats") and hasattr(d.stats, "cache_misses"))
