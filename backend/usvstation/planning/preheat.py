@@ -120,13 +120,11 @@ class _Grower:
         self.report = report
         if report.obstacle_hits is None:
             report.obstacle_hits = np.zeros(problem.obstacles.count, dtype=np.int64)
-        self.near = [self._near_block(k) for k in range(layout.n_mid + 1)]
         self.compiled = kernel_preheat.AVAILABLE if compiled is None else compiled
-        if self.compiled:
-            self.near_rows = [
-                (np.ascontiguousarray(np.column_stack([a[:, 0, 0] for a in (
-                    o.cx, o.cy, o.vx, o.vy, o.r)]).reshape(-1, 5)), o.index.astype(np.int64))
-                for o in self.near]
+        if not self.compiled:
+            self.near = [self._near_block(k) for k in range(layout.n_mid + 1)]
+        else:
+            self.near_rows = self._near_rows()
             cx, cy = problem.current
             self.speed_limits = np.array([
                 2.0 * problem.accel_max, problem.speed_min**2, problem.speed_max**2, cx, cy,
@@ -143,6 +141,19 @@ class _Grower:
         self.start_slope = np.nan
         if problem.start_course is not None:
             self.start_slope = angle_diff(math.pi, problem.start_course)
+
+    def _near_rows(self) -> list[tuple[np.ndarray, np.ndarray]]:
+        """`_near_block` of every block as the compiled draw takes it: the rows (cx, cy, vx,
+        vy, R_l) of the obstacles near block k and their indices, all blocks at once."""
+        lay, f = self.layout, self.problem.obstacles
+        blocks = np.arange(lay.n_mid)
+        tops = np.concatenate([[float(lay.start[0])], lay.x_of(lay.x_count, blocks)])
+        bottoms = np.concatenate([lay.x_of(0, blocks), [float(lay.goal[0])]])
+        reach = f.inflated + lay.x_res
+        near = ((f.centre[None, :, 0] + reach >= bottoms[:, None])
+                & (f.centre[None, :, 0] - reach <= tops[:, None])) | ~f.static[None, :]
+        table = np.column_stack([f.centre, f.velocity, f.inflated]).reshape(-1, 5)
+        return [(table[idx], idx) for idx in (np.flatnonzero(row) for row in near)]
 
     def _near_block(self, k: int) -> _Obstacles:
         """Obstacles that can touch a segment ending in block k (k = n_mid: the goal leg)."""
