@@ -6,7 +6,9 @@ most of its time in the fixed cost of about 40 NumPy calls per batch. This
 kernel does the same arithmetic path by path in one call: the hard gates
 (acceleration, speed, turn, first turn, speed through the water), the
 collision test of eq. 9 over the evaluator's precomputed (segment,
-obstacle) pairs, stopping at a path's first hit, the four terms and eq. 12.
+obstacle) pairs, stopping at a path's first hit and skipping the pairs whose
+circle, swept over the segment's time window, cannot reach the segment's box
+(by more than `SLACK`), the four terms and eq. 12.
 Every expression is written in the reference's order, so the values agree
 bit for bit (tests/unit/test_plan_kernel.py checks it on random inputs); the
 transcendental functions whose NumPy versions are vectorised differently from
@@ -31,6 +33,10 @@ except ImportError:  # pragma: no cover - numba is a dependency; NumPy is the fa
 
 AVAILABLE = njit is not None
 _EPS = 1e-9
+# m: a pair is skipped only when its swept circle stays this much further than its radius
+# from the segment's box, far beyond eq. 9's rounding (1e-7 m at 20 km), so that the skip
+# never changes a verdict
+SLACK = 1e-6
 
 
 def _eq12_batch(x: np.ndarray, y: np.ndarray, v: np.ndarray, t: np.ndarray,
@@ -91,6 +97,15 @@ def _eq12_batch(x: np.ndarray, y: np.ndarray, v: np.ndarray, t: np.ndarray,
             ox, oy, ovx, ovy, r = (pair_obs[k, 0], pair_obs[k, 1], pair_obs[k, 2],
                                    pair_obs[k, 3], pair_obs[k, 4])
             t0, t1 = t[s0, j], t[s1, j]
+            # skip a pair whose circle, swept over the segment's time window, stays further
+            # than r + SLACK from the segment's box in x or in y: it cannot meet it
+            sx0, sx1, sy0, sy1 = ovx * t0, ovx * t1, ovy * t0, ovy * t1
+            reach = r + SLACK
+            if (ox + min(sx0, sx1) - reach > max(x[s0, j], x[s1, j])
+                    or ox + max(sx0, sx1) + reach < min(x[s0, j], x[s1, j])
+                    or oy + min(sy0, sy1) - reach > max(y[s0, j], y[s1, j])
+                    or oy + max(sy0, sy1) + reach < min(y[s0, j], y[s1, j])):
+                continue
             ex0 = x[s0, j] - (ox + ovx * t0)
             ey0 = y[s0, j] - (oy + ovy * t0)
             ex1 = x[s1, j] - (ox + ovx * t1)

@@ -3,10 +3,11 @@
 Finishing a plan checks its smoothed path and measures its clearances against
 every obstacle: (samples x obstacles) pairs, 180 x 1000 on a dense field, which
 NumPy holds as a dozen temporaries of that size. These kernels walk the pairs
-once, each expression in the NumPy reference's order, so their results are the
-reference's bit for bit (tests/unit/test_plan_kernel_geom.py; `swept_clearances` to
-within rounding, its reference using CPython's math.hypot, which rounds differently from
-libm's):
+once, each expression in the NumPy reference's order, skipping the pairs that a box test
+shows cannot meet (or cannot be nearer than the least clearance found so far) by more than
+`kernel.SLACK`, so their results are the reference's bit for bit
+(tests/unit/test_plan_kernel_geom.py; `swept_clearances` to within rounding, its
+reference using CPython's math.hypot, which rounds differently from libm's):
 
 - `polyline_hits`: per segment, does it enter an open circle (eq. 9,
   `ObstacleField.hits(...).any(axis=0)`);
@@ -27,7 +28,7 @@ import math
 
 import numpy as np
 
-from usvstation.planning.kernel import AVAILABLE, njit
+from usvstation.planning.kernel import AVAILABLE, SLACK, njit
 
 
 def _polyline_hits(x: np.ndarray, y: np.ndarray, t: np.ndarray, centre: np.ndarray,
@@ -37,6 +38,9 @@ def _polyline_hits(x: np.ndarray, y: np.ndarray, t: np.ndarray, centre: np.ndarr
     for s in range(x.shape[0] - 1):
         for m in range(r.shape[0]):
             cx, cy, vx, vy = centre[m, 0], centre[m, 1], velocity[m, 0], velocity[m, 1]
+            if _box_gap(x[s], y[s], t[s], x[s + 1], y[s + 1], t[s + 1], cx, cy, vx,
+                        vy) > r[m] + SLACK:  # cannot meet: skipped (kernel.eq12_batch)
+                continue
             ex0, ey0 = x[s] - (cx + vx * t[s]), y[s] - (cy + vy * t[s])
             ex1, ey1 = x[s + 1] - (cx + vx * t[s + 1]), y[s + 1] - (cy + vy * t[s + 1])
             r2 = r[m] * r[m]
@@ -49,6 +53,16 @@ def _polyline_hits(x: np.ndarray, y: np.ndarray, t: np.ndarray, centre: np.ndarr
                 out[s] = True
                 break
     return out
+
+
+def _box_gap(x0: float, y0: float, t0: float, x1: float, y1: float, t1: float, cx: float,
+             cy: float, vx: float, vy: float) -> float:  # pragma: no cover
+    """A lower bound of the distance between the boat on segment (x0, y0, t0) -> (x1, y1,
+    t1) and a centre moving from (cx, cy) at (vx, vy): the gap between the segment's box
+    and the box the centre sweeps over [t0, t1] (the larger of the x and y gaps)."""
+    gx = max(cx + min(vx * t0, vx * t1) - max(x0, x1), min(x0, x1) - cx - max(vx * t0, vx * t1))
+    gy = max(cy + min(vy * t0, vy * t1) - max(y0, y1), min(y0, y1) - cy - max(vy * t0, vy * t1))
+    return max(gx, gy, 0.0)
 
 
 def _closest(ex: float, ey: float, dx: float, dy: float) -> float:  # pragma: no cover
@@ -68,6 +82,9 @@ def _field_clearance(x: np.ndarray, y: np.ndarray, t: np.ndarray, centre: np.nda
         dt = t[s + 1] - t[s]
         for m in range(radius.shape[0]):
             cx, cy, vx, vy = centre[m, 0], centre[m, 1], velocity[m, 0], velocity[m, 1]
+            if _box_gap(x[s], y[s], t[s], x[s + 1], y[s + 1], t[s + 1], cx, cy, vx,
+                        vy) - radius[m] > best + SLACK:  # cannot be nearer than the best
+                continue
             ex, ey = x[s] - cx - vx * t[s], y[s] - cy - vy * t[s]
             dx, dy = (x[s + 1] - x[s]) - vx * dt, (y[s + 1] - y[s]) - vy * dt
             best = min(best, _closest(ex, ey, dx, dy) - radius[m])
@@ -83,6 +100,9 @@ def _hull_clearance(x: np.ndarray, y: np.ndarray, t: np.ndarray, centre: np.ndar
         t0, t1 = t[s], t[s + 1]
         for m in range(r.shape[0]):
             ox, oy, vx, vy = centre[m, 0], centre[m, 1], velocity[m, 0], velocity[m, 1]
+            if _box_gap(x[s], y[s], t0, x[s + 1], y[s + 1], t1, ox, oy, vx,
+                        vy) - r[m] > best + SLACK:  # cannot be nearer than the best
+                continue
             r0x, r0y = x[s] - (ox + vx * t0), y[s] - (oy + vy * t0)
             drx = (x[s + 1] - x[s]) - vx * (t1 - t0)
             dry = (y[s + 1] - y[s]) - vy * (t1 - t0)
@@ -140,7 +160,7 @@ def _swept_clearances(x: np.ndarray, y: np.ndarray, t: np.ndarray, centre: np.nd
 
 if AVAILABLE:
     _jit = njit(cache=True, nogil=True, error_model="numpy")
-    _closest, _point_segment = _jit(_closest), _jit(_point_segment)
+    _closest, _point_segment, _box_gap = _jit(_closest), _jit(_point_segment), _jit(_box_gap)
     polyline_hits, field_clearance, hull_clearance, swept_clearances = (
         _jit(f) for f in (_polyline_hits, _field_clearance, _hull_clearance,
                           _swept_clearances))
