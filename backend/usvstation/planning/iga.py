@@ -110,7 +110,8 @@ def run_iga(
         return out, True
 
     evaluations_before = budget.evaluations
-    levels, fresh, report = _foundation(layout, problem, opts, rng, expired)
+    levels, fresh, report = _foundation(layout, problem, opts, rng, expired,
+                                        compiled=engine is not None)
     codes = layout.levels_to_codes(levels)
     first_fit, complete = fitness(codes)
     pop = _Population(codes, first_fit)
@@ -156,7 +157,7 @@ def run_iga(
 
 def _foundation(
     layout: GeneLayout, problem: Problem, opts: IGAOptions, rng: np.random.Generator,
-    expired: Callable[[], bool] | None = None,
+    expired: Callable[[], bool] | None = None, compiled: bool | None = None,
 ) -> tuple[np.ndarray, np.ndarray, PreheatReport]:
     """Initial population (levels), a stock of fresh preheated paths for SSIH, the report.
 
@@ -169,14 +170,15 @@ def _foundation(
         empty = np.zeros((0, layout.n_genes), dtype=np.int64)
         return random_levels(layout, rng, pop_n), empty, PreheatReport()
     grown, ok, report = preheat(layout, problem, opts, rng, 2 * pop_n, need=pop_n,
-                                expired=expired)
+                                expired=expired, compiled=compiled)
     if ok.sum() < max(4, pop_n // 4) and not (expired and expired()):
         # hard problem: one more round with many more candidates and draws per waypoint
         harder = opts.model_copy(update={
             "candidates": 4 * opts.candidates, "preheat_retries": 4 * opts.preheat_retries,
         })
         more, ok_more, rep = preheat(layout, problem, harder, rng, pop_n,
-                                     need=max(4, pop_n // 4) - int(ok.sum()), expired=expired)
+                                     need=max(4, pop_n // 4) - int(ok.sum()), expired=expired,
+                                     compiled=compiled)
         report.merge(rep)
         grown, ok = np.concatenate([grown, more]), np.concatenate([ok, ok_more])
     grown = grown[ok]
@@ -394,7 +396,8 @@ def _newborns(
             pool = [layout.levels_to_codes(random_levels(layout, rng, n))]
         return np.concatenate(pool), fresh, report
     if parents.shape[0] == 0 and fresh.shape[0] == 0:
-        grown, ok, rep = preheat(layout, problem, opts, rng, n, expired=expired)
+        grown, ok, rep = preheat(layout, problem, opts, rng, n, expired=expired,
+                                 compiled=False)
         report.merge(rep)
         fresh = layout.levels_to_codes(grown[ok])
     n_fresh = min(fresh.shape[0], n if parents.shape[0] == 0 else max(1, n // 5))
