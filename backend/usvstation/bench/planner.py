@@ -68,9 +68,9 @@ def run_planner_bench(
         "baseline": {"library": "deap and pymoo", "seeds": deap_seeds, "max_generations": deap_max,
                      "runs": []},
     }
-    from usvstation.planning import kernel
+    from usvstation.planning.warm import warm
 
-    kernel.warm()  # once, as a plan worker does: the plan times below are plans alone
+    warm()  # once, as a plan worker does: the plan times below are plans alone
     ablation_rows = []
     for scenario in scenarios:
         progress(f"planning {scenario.name} with {len(seed_list)} seeds")
@@ -110,9 +110,10 @@ from usvstation.clock import Stopwatch
 watch = Stopwatch()
 from usvstation.planning import kernel
 from usvstation.planning.plan import plan_scenario
+from usvstation.planning.warm import warm
 from usvstation.scenario import load_scenario
 t1, c1 = watch.elapsed(), watch.cpu()
-kernel.warm()
+warm()
 t2, c2 = watch.elapsed(), watch.cpu()
 plan_scenario(load_scenario("case1"), seed=1)
 t3, c3 = watch.elapsed(), watch.cpu()
@@ -124,7 +125,7 @@ print(kernel.AVAILABLE, t1, t2 - t1, t3 - t2, t4 - t3, c2 - c1, c3 - c2)
 
 def cold_start() -> dict[str, Any]:
     """The compiled kernels' first use: a fresh process with an empty numba cache (compile),
-    then one that finds the cache (`cache=True`): import, `kernel.warm()` (what a plan worker
+    then one that finds the cache (`cache=True`): import, `warm()` (what a plan worker
     does once; outside a plan's budget), first and second plan of case1, ms (wall; warm and
     first plan also CPU)."""
     import subprocess
@@ -532,7 +533,7 @@ def render_markdown(r: dict[str, Any]) -> str:
         lines += ["", f"Public-suite median CPU time of a plan: {r['suite_median_cpu_ms']} ms."]
     cold = r.get("cold_start", {})
     if "compile" in cold and "cached" in cold:
-        lines += ["", "Cold start (fresh process; `kernel.warm()` then case1 twice, ms): "
+        lines += ["", "Cold start (fresh process; `planning.warm.warm()` then case1 twice, ms): "
                   + "; ".join(f"{label}: warm {cold[label]['warm_ms']} (CPU "
                               f"{cold[label]['warm_cpu_ms']}), first plan "
                               f"{cold[label]['first_plan_ms']}, second "

@@ -15,8 +15,8 @@ transcendental functions whose NumPy versions are vectorised differently from
 libm (arctan2, sin, cos) stay in NumPy: the headings and the first-turn flags
 come in as arrays.
 
-Compiled with `cache=True` (first use in a fresh environment compiles for
-about a second: `bench planner` reports it as `cold_start`); without numba
+Compiled with `cache=True` (planning/warm.py loads or compiles every kernel of the
+planner once per process; `bench planner` reports the cold start); without numba
 the evaluator falls back to the NumPy reference.
 """
 
@@ -144,11 +144,3 @@ def _eq12_batch(x: np.ndarray, y: np.ndarray, v: np.ndarray, t: np.ndarray,
 
 
 eq12_batch = njit(cache=True, nogil=True)(_eq12_batch) if AVAILABLE else None
-
-
-def warm() -> bool:
-    """Load (or compile) every kernel of the planner now, e.g. once per plan worker, so that
-    the first plan does not pay for it; False without numba (planning/warm.py)."""
-    from usvstation.planning.warm import warm as warm_all  # here: warm.py plans with the IGA
-
-    return warm_all()
