@@ -25,7 +25,9 @@ FROM python:3.11-slim@sha256:9c900dea9e8fb7e16277c179b555cc72d29a352dbc33cff48ad
 RUN useradd --create-home --uid 10001 --groups dialout station \
     && mkdir /data && chown station:station /data
 COPY --from=build /wheels /wheels
-RUN pip install --no-cache-dir /wheels/*.whl && rm -rf /wheels
+RUN pip install --no-cache-dir /wheels/*.whl && rm -rf /wheels \
+    && python -c "from usvstation.planning.warm import warm; warm()"
+# (the IGA's numba kernels compiled into their cache beside the package, once, at build)
 # the console keeps its layout: index.html, app/, node_modules/<pkg>/dist
 COPY --from=console /frontend/index.html /opt/usv-station/frontend/index.html
 COPY --from=console /frontend/app /opt/usv-station/frontend/app

@@ -13,6 +13,9 @@ $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet -e '.[dev]'
+	@# compile the IGA's numba kernels into their on-disk cache once, at install, rather than
+	@# in the first plan (about 10 s of CPU; docs/planner.md)
+	$(BIN)/python -c "from usvstation.planning.warm import warm; warm()"
 	touch $(STAMP)
 
 # The console's libraries (Leaflet, uPlot) from npm, served by the station itself

@@ -3,6 +3,8 @@
 import json
 from pathlib import Path
 
+import numpy as np
+
 from usvstation.cli import main
 
 
@@ -57,3 +59,36 @@ def test_bench_compare_json_and_markdown(tmp_path, capsys):
 def test_bench_compare_refuses_an_unknown_planner(capsys):
     assert main(["bench", "compare", "--planners", "rrt", "--families", "traps"]) == 2
     assert "planners: unknown planner 'rrt'; available: iga, colregs-ga" in capsys.readouterr().err
+
+
+def test_walls_and_encounters_families_are_the_papers_settings():
+    """walls: 004's map whose straight line three walls cut (a slalom); encounters: 001's
+    five classes at its scale, one each, then seeded ones; both seeded."""
+    from usvstation.bench.compare import ENCOUNTERS_001, family_scenarios, walls_004
+    from usvstation.planning.seeds.common import World
+
+    (sc,) = family_scenarios("walls", hidden=1, dense_maps=0, hidden_from=5)
+    assert sc == walls_004(1, 5) and len(sc.obstacles) > 150
+    world = World.from_scenario(sc)
+    line = np.linspace([sc.start.x, sc.start.y], [sc.goal.x, sc.goal.y], 400)
+    blocked = ~world.points_free(line, 0.0)
+    assert np.count_nonzero(np.diff(blocked.astype(int)) == 1) >= 3  # three walls in the way
+    public = family_scenarios("encounters", hidden=2)
+    assert [s.name.split("-", 3)[-1] for s in public[:5]] == list(ENCOUNTERS_001)
+    assert len(public) == 7 and all(s.vessel.speed_max == 28.0 for s in public)
+    assert all(len(s.obstacles) >= 1 for s in public)
+
+
+def test_orderings_are_judged_on_their_intervals():
+    from usvstation.bench.compare import paper_orderings
+
+    t = {"pairs": 30, "family": "walls", "raw": {}, "finished": {
+        "vpf_over_rrt_length": {"mean": 0.95, "ci95": [0.93, 0.97], "n": 30},
+        "vpf_over_rrt_tta": {"mean": 1.01, "ci95": [0.9, 1.1], "n": 30},
+        "bspline_over_rrt_length": {"mean": 0.99, "ci95": [0.98, 0.995], "n": 30}}}
+    out = {(o["basis"], o["ordering"]): o for o in paper_orderings({"table_004_walls": t})}
+    assert out[("finished", "VPF-RRT* is shorter than RRT*")]["verdict"] == "holds"
+    assert out[("finished", "VPF-RRT* is shorter than RRT*")]["in_paper_range"]
+    assert out[("finished", "VPF-RRT* turns less than RRT*")]["verdict"].startswith("undecided")
+    assert out[("finished", "B-spline-RRT* is longer than RRT*")]["verdict"] == "does not hold"
+    assert out[("raw", "B-spline-RRT* is longer than RRT*")]["verdict"] == "not measured"

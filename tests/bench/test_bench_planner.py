@@ -37,9 +37,12 @@ def test_quick_planner_bench(tmp_path):
     assert set(out["hidden"]) == {"pointing_away", "strong_current", "crossing_ships",
                                   "behind_ramp", "long_wall", "dense_field", "alongside",
                                   "outline_astern_traffic"}
-    for fam in out["hidden"].values():
+    assert set(out["review"]) == {"narrow_passage", "harbour_entrance", "ship_at_ramp",
+                                  "head_on", "cross_current", "far_start", "goal_blocked"}
+    for fam in (*out["hidden"].values(), *out["review"].values()):
         assert fam["returned_but_refused"] == []  # every plan returned passes the checker
         assert fam["clearance_diff_max_m"] <= 0.05
+        assert fam["smoothed_kept"] <= fam["returned"] and fam["start_speed_kept"] <= 1
     assert out["replan"]["instants"] == 2 and out["replan"]["p99_ms"] > 0
     assert set(out["scaling"]) == {"0", "40"}
     assert set(out["robustness"]) == {"before", "after"}

@@ -58,20 +58,63 @@ def test_recovery_against_a_strong_current_is_planned_and_valid(current, directi
     assert (last["x"], last["y"]) == (0.0, 0.0)
 
 
-@pytest.mark.parametrize("current", [1.0, 1.5, 2.0])
-def test_a_boat_set_back_by_the_current_is_planned_along_its_hull(current):
-    # 0.5 m/s through the water against `current` along +x: the boat drifts away from the ramp
-    # over ground, yet its first leg runs towards the ramp within turn_max of its hull
+@pytest.mark.parametrize("current", [1.0, 1.5])
+def test_a_boat_making_way_against_the_current_starts_from_its_speed_over_ground(current):
+    # 0.5 m/s over ground towards the ramp against `current` along +x (0.5 + current through
+    # the water): the plan starts from 0.5 m/s, the first leg towards the ramp
     sc = recovery(current, 0.0)
     state = start_state(sc)
     assert state.course == pytest.approx(math.pi)
-    # the least ground speed the leg towards the ramp admits: speed_min over ground
-    assert state.speed == pytest.approx(sc.vessel.speed_min)
+    assert state.speed == 0.5
+    plan = plan_scenario(sc, seed=1).to_document()
+    assert_valid(plan, sc)
+    assert plan["waypoints"][0]["speed"] == 0.5
+    assert not any("start speed" in w for w in plan["warnings"])
+
+
+def test_a_boat_set_back_by_the_current_is_planned_along_its_hull():
+    # 0.5 m/s over ground against 2 m/s along +x: making way towards the ramp would take
+    # 2.5 m/s through the water, above speed_max 2.47, so the boat is set back (1.5 m/s
+    # through the water, drifting away). Its first leg still runs towards the ramp within
+    # turn_max of its hull, from the fastest ground speed that leg admits (0.47 m/s), and
+    # the plan says that it could not start from 0.5 m/s
+    sc = recovery(2.0, 0.0)
+    state = start_state(sc)
+    assert state.course == pytest.approx(math.pi)
+    assert state.speed == pytest.approx(2.47 - 2.0)
     plan = plan_scenario(sc, seed=1).to_document()
     assert_valid(plan, sc)
     first = plan["waypoints"][0]
-    assert first["speed"] == pytest.approx(sc.vessel.speed_min)
+    assert first["speed"] == pytest.approx(2.47 - 2.0)
     assert math.cos(math.radians(first["heading_deg"])) < 0.0  # hull towards the ramp
+    assert any("start speed 0.5 m/s over ground" in w for w in plan["warnings"])
+
+
+@pytest.mark.parametrize(("current", "direction_deg", "heading", "speed"),
+                         [(0.8, 180.0, 180.0, 1.0), (0.8, 0.0, 180.0, 1.0),
+                          (1.2, 90.0, 180.0, 1.6), (0.5, 135.0, 200.0, 1.0),
+                          (1.0, 270.0, 160.0, 1.0)])
+def test_in_a_current_the_plan_starts_from_the_start_speed_over_ground(
+        current, direction_deg, heading, speed):
+    """The start speed is over ground: the first waypoint's speed is exactly it (no jump to
+    the ground speed the hull makes through the water plus the current, 1.0 -> 1.8 m/s
+    before), and the first leg reaches the next waypoint's speed within accel_max."""
+    sc = recovery(current, direction_deg, speed=speed, heading=heading)
+    plan = plan_scenario(sc, seed=2).to_document()
+    assert_valid(plan, sc)
+    a, b = plan["waypoints"][:2]
+    assert a["speed"] == speed
+    assert not any("start speed" in w for w in plan["warnings"])
+    assert abs(b["speed"] - a["speed"]) / (b["t"] - a["t"]) <= VESSEL["accel_max"] * (1 + 1e-6)
+
+
+def test_a_start_faster_than_the_cross_current_allows_is_planned_with_a_warning():
+    """1 m/s over ground with the hull across a 1.2 m/s cross current cannot be: the plan
+    starts from a speed its first leg admits and says so."""
+    sc = recovery(1.2, 90.0, speed=1.0, heading=180.0)
+    plan = plan_scenario(sc, seed=2).to_document()
+    assert_valid(plan, sc)
+    assert any("start speed 1 m/s over ground" in w for w in plan["warnings"])
 
 
 def test_stronger_current_takes_longer_over_ground():
@@ -108,6 +151,10 @@ def test_a_boat_pointing_away_in_a_strong_current_turns_within_the_limit(
     # ground by at most turn_max at every waypoint, its speeds through the water in limits.
     # Static obstacles only: the slow run-out against 2 m/s (about 85 s) would meet the
     # moving one of OBSTACLES where it is then.
-    sc = recovery(current, direction_deg, speed=1.5, heading=heading, obstacles=OBSTACLES[:2])
+    h, c = math.radians(heading), math.radians(direction_deg)
+    over_ground = math.hypot(1.5 * math.cos(h) + current * math.cos(c),
+                             1.5 * math.sin(h) + current * math.sin(c))  # 1.5 through the water
+    sc = recovery(current, direction_deg, speed=round(over_ground, 6), heading=heading,
+                  obstacles=OBSTACLES[:2])
     plan = plan_scenario(sc, seed=1).to_document()
     assert_valid(plan, sc)

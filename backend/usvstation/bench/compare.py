@@ -3,7 +3,9 @@
 Families (digest 9.2): recovery (the public suite, plus seeded random
 recoveries), transit (002 Tab. V, 400 m), dense (004, corrected start/goal
 pairs of Tab. 5/6 on seeded 1 km maps), colregs (single-target head-on,
-crossings both ways, overtaking both ways, two mixes) and traps (003).
+crossings both ways, overtaking both ways, two mixes) and traps (003); on
+request walls (004's maps at its difficulty: walls that force a slalom) and
+encounters (001's encounter classes at its scale: 50 kn, 800 m, 15 km).
 Metrics per plan: success, length, normalisation index, duration, water
 clearance, total and maximum turn, plan time and, on COLREGs encounters,
 the compliance score of `planning.colregs.compliance`, and the tracked
@@ -31,6 +33,8 @@ from usvstation.planning.registry import plan_with, planner_names
 from usvstation.scenario import Scenario, load_scenario, parse_scenario
 
 FAMILIES = ("recovery", "transit", "dense", "colregs", "traps")
+# on request (--families): paper 004's difficulty and paper 001's scale (issue 27)
+EXTRA_FAMILIES = ("walls", "encounters")
 PAPER_004 = {"vpf_over_rrt_length": [0.949, 0.978], "bspline_over_rrt_length": [1.126, 1.297],
              "vpf_over_rrt_tta": [0.552, 0.978], "bspline_over_rrt_tta": [1.115, 2.758]}
 DENSE_PAIRS = (((423.0, 440.0), (-411.0, -411.0)), ((-94.0, 27.0), (347.0, -451.0)),
@@ -78,6 +82,39 @@ def dense_004(pair: int, seed: int, count: int = 40) -> Scenario:
     return _transit(f"dense-{pair}-{seed}", start, goal, obs, vessel, 3.0)
 
 
+def walls_004(pair: int, seed: int) -> Scenario:
+    """Paper 004's difficulty (NI 1.36-1.45 in Tab. 5/6), which scattered circles do not
+    reach (the difficulty sweep): its 1 km map with 40 circles of 8 m, plus three walls of
+    touching 8 m circles across the straight line at about a quarter, half and three
+    quarters of the way, turned up to 15 degrees, alternating sides, each reaching 10-13.5 %
+    of the start-goal distance past the line and 600 m the other way: the shortest way is a
+    slalom round their ends (OMPL's BIT*: 1.36-1.51 times the straight line on the first
+    eight maps)."""
+    base = dense_004(pair, seed)
+    rng = np.random.default_rng([40, pair, seed])
+    (sx, sy), (gx, gy) = DENSE_PAIRS[pair]
+    dist = math.hypot(gx - sx, gy - sy)
+    ux, uy = (gx - sx) / dist, (gy - sy) / dist
+    side = float(rng.choice([-1.0, 1.0]))
+    obs = [o.model_dump() for o in base.obstacles]
+    for frac in (0.25, 0.5, 0.75):
+        f = frac + rng.uniform(-0.04, 0.04)
+        cx, cy = sx + f * dist * ux, sy + f * dist * uy
+        turn = math.radians(rng.uniform(-15.0, 15.0))
+        nx = -uy * math.cos(turn) - ux * math.sin(turn)  # the line's normal, turned
+        ny = ux * math.cos(turn) - uy * math.sin(turn)
+        reach = rng.uniform(0.10, 0.135) * dist
+        for k in np.arange(-600.0, reach + 1e-9, 12.0):  # 8 m circles 12 m apart: a wall
+            obs.append({"x": round(cx + side * k * nx, 2), "y": round(cy + side * k * ny, 2),
+                        "radius": 8.0})
+        side = -side
+    start, goal = DENSE_PAIRS[pair]
+    obs = [o for o in obs if min(math.hypot(o["x"] - start[0], o["y"] - start[1]),
+                                 math.hypot(o["x"] - goal[0], o["y"] - goal[1])) > 40.0]
+    vessel = dict(USV, compensation_radius=6.0)
+    return _transit(f"walls-{pair}-{seed}", start, goal, obs, vessel, 3.0)
+
+
 def colregs_cases() -> list[Scenario]:
     """Own boat (0, 0) northwards (+y) at 2 m/s to (0, 500); targets meet it at t = 120 s."""
     def target(course_deg: float, speed: float, t_meet: float = 120.0) -> dict:
@@ -112,6 +149,48 @@ def trap_cases() -> list[Scenario]:
                  [{"x": 50.0, "y": 0.0, "radius": 8.0}], USV, 1.5),
         _transit("trap-u-shape", (0.0, 0.0), (100.0, 0.0), u_shape, USV, 1.5),
     ]
+
+
+KNOT = 0.514444  # m/s
+SHIP_001 = {"length": 20.0, "speed_min": 2.0, "speed_max": 28.0, "accel_max": 2.0,
+            "turn_max_deg": 60.0, "compensation_radius": 680.0}  # R_l = 800 m with r = 100 m
+ENCOUNTERS_001 = {  # relative course (deg, clockwise from own) and speed (m/s) at 001's scale
+    "head-on": ((170.0, 190.0), (20.0, 28.0)),
+    "crossing-give-way": ((240.0, 300.0), (15.0, 25.0)),
+    "crossing-stand-on": ((60.0, 120.0), (15.0, 25.0)),
+    "overtaking": ((-10.0, 10.0), (6.0, 12.0)),
+    "overtaken": ((-10.0, 10.0), (29.0, 30.0)),  # faster than own 50 kn (25.7 m/s)
+}
+MEET_001 = {"overtaken": (400.0, 550.0)}  # s; the others 120-240 s
+
+
+def encounter_001(seed: int) -> Scenario:
+    """Paper 001's setting (Tab. II): own ship at 50 kn from (0, 0) northwards to (0, 15 km)
+    in its 30 km x 20 km area, keeping 800 m from every target (targets of radius 100 m,
+    R_c = 680 m, 20 m hull: R_l = 800 m); one or two targets of the encounter classes of its
+    section II.B (head-on, crossing give-way and stand-on, overtaking, overtaken) on a
+    collision course with a miss distance of up to 300 m, meeting 120-240 s out (an
+    overtaking one 400-550 s; avoidance starts at 2 km in the paper). Seed 0-4: one target
+    of each class in turn."""
+    rng = np.random.default_rng([101, seed])
+    kinds = list(ENCOUNTERS_001)
+    own = 50.0 * KNOT
+    chosen = [kinds[seed]] if seed < len(kinds) else [
+        kinds[int(rng.integers(len(kinds)))] for _ in range(int(rng.integers(1, 3)))]
+    obs = []
+    for k, kind in enumerate(chosen):
+        (c_lo, c_hi), (v_lo, v_hi) = ENCOUNTERS_001[kind]
+        course = math.radians(rng.uniform(c_lo, c_hi))
+        speed = rng.uniform(v_lo, v_hi)
+        t_meet = rng.uniform(*MEET_001.get(kind, (120.0, 240.0))) + 90.0 * k
+        vx, vy = speed * math.sin(course), speed * math.cos(course)
+        mx, my = rng.uniform(-300.0, 300.0), own * t_meet
+        obs.append({"x": round(mx - vx * t_meet, 1), "y": round(my - vy * t_meet, 1),
+                    "radius": 100.0, "vx": round(vx, 4), "vy": round(vy, 4)})
+    obs = [o for o in obs if math.hypot(o["x"], o["y"]) > 1000.0
+           and math.hypot(o["x"], o["y"] - 15_000.0) > 1000.0]
+    return _transit(f"encounter-001-{seed}-{'+'.join(chosen)}", (0.0, 0.0), (0.0, 15_000.0),
+                    obs, SHIP_001, own, 90.0)
 
 
 def transit_hidden(seed: int) -> Scenario:
@@ -213,7 +292,14 @@ def family_scenarios(family: str, hidden: int = 0, dense_maps: int = 2,
         return colregs_cases() + [colregs_hidden(s) for s in seeds]
     if family == "traps":
         return trap_cases() + [trap_hidden(s) for s in seeds]
-    raise ValueError(f"family: unknown family {family!r}; available: {', '.join(FAMILIES)}")
+    if family == "walls":
+        return ([walls_004(p, s) for p in range(len(DENSE_PAIRS)) for s in range(dense_maps)]
+                + [walls_004(s % len(DENSE_PAIRS), s) for s in seeds])
+    if family == "encounters":
+        return [encounter_001(s) for s in range(len(ENCOUNTERS_001))] + [
+            encounter_001(s) for s in seeds]
+    raise ValueError(f"family: unknown family {family!r}; available: "
+                     f"{', '.join(FAMILIES + EXTRA_FAMILIES)}")
 
 
 def tracked_deviation(scenario: Scenario, plan: dict[str, Any]) -> dict[str, Any]:
@@ -347,12 +433,18 @@ def run_compare(planners: list[str] | None = None, families: list[str] | None = 
                     if progress:
                         progress(f"{fam} {sc.name} ompl:{pl} seed {seed}: "
                                  f"{'ok' if row['success'] else 'FAIL'}")
+    encounters = [sc for fam in families if fam in ("colregs", "encounters")
+                  for sc in family_scenarios(fam, hidden, dense_maps, hidden_from)]
     result = {"planners": planners, "families": families, "seeds": seeds,
               "first_seed": first_seed, "hidden": hidden, "hidden_from": hidden_from,
               "summary": summarise(rows), "table_004": table_004(rows),
               "difficulty": difficulty(rows),
-              "replan_002": replan_002(rows), "colregs_001": colregs_001(rows, seeds, progress),
+              "replan_002": replan_002(rows),
+              "colregs_001": colregs_001(rows, seeds, progress, encounters or None),
               "rows": [{k: v for k, v in r.items() if k != "path"} for r in rows]}
+    if "walls" in families:
+        result["table_004_walls"] = table_004(rows, "walls")
+    result["orderings"] = paper_orderings(result)
     if sweep:
         if progress:
             progress(f"difficulty sweep over {sweep} obstacles, {sweep_maps} maps each")
@@ -502,10 +594,11 @@ def _share(rows: list[dict[str, Any]]) -> float | None:
     return round(sum(r["success"] for r in rows) / len(rows), 4) if rows else None
 
 
-def table_004(rows: list[dict[str, Any]]) -> dict[str, Any]:
-    """Means over the dense family of per-episode ratios to RRT* (same scenario and seed)."""
+def table_004(rows: list[dict[str, Any]], family: str = "dense") -> dict[str, Any]:
+    """Means over the family (004's maps: dense, or walls at its difficulty) of per-episode
+    ratios to RRT* (same scenario and seed)."""
     by = {(r["planner"], r["scenario"], r["seed"]): r for r in rows
-          if r["family"] == "dense" and r["success"]}
+          if r["family"] == family and r["success"]}
     ratios: dict[str, list[float]] = {k: [] for k in PAPER_004}
     ratios.update(vpf_over_rrt_time=[], bspline_over_rrt_time=[])
     raw: dict[str, list[float]] = {k: [] for k in PAPER_004}
@@ -536,7 +629,8 @@ def table_004(rows: list[dict[str, Any]]) -> dict[str, Any]:
                       "n": len(v)} for k, v in raw.items()}
     out["pairs"] = len(ratios["vpf_over_rrt_length"])
     out["paper"] = PAPER_004
-    dense = [r for r in rows if r["family"] == "dense"]
+    out["family"] = family
+    dense = [r for r in rows if r["family"] == family]
     for pl in ("rrt-star", "bspline-rrt-star", "vpf-rrt-star", "ompl:RRTstar",
                "ompl:InformedRRTstar", "ompl:BITstar"):
         rs = [r for r in dense if r["planner"] == pl and r["success"]]
@@ -545,6 +639,93 @@ def table_004(rows: list[dict[str, Any]]) -> dict[str, Any]:
                        ("length_m", "total_turn_deg", "plan_time_ms", "duration_s",
                         "normalization_index")}
     return out
+
+
+def _side(ci: list[float] | None, below: bool, ref: float = 1.0) -> str:
+    """'holds' when the 95 % interval lies on the expected side of `ref`, 'does not hold'
+    when it lies on the other, else 'undecided'."""
+    if not ci:
+        return "not measured"
+    lo, hi = ci
+    if (hi < ref) if below else (lo > ref):
+        return "holds"
+    if (lo > ref) if below else (hi < ref):
+        return "does not hold"
+    return "undecided (the interval spans 1)"
+
+
+def paper_orderings(result: dict[str, Any]) -> list[dict[str, Any]]:
+    """Each seed paper's orderings as measured here, in words, with the 95 % intervals they
+    rest on: 004 Tables 5-6 on its maps (dense: its density; walls: its difficulty), on
+    the algorithms' own paths and on the finished plans; 002's re-planning time and success
+    on its 400 m map; 001 Table III (improved against conventional GA) on its encounters."""
+    out: list[dict[str, Any]] = []
+    for key in ("table_004", "table_004_walls"):
+        t = result.get(key)
+        if not t or not t.get("pairs"):
+            continue
+        for basis in ("raw", "finished"):
+            for ratio, below, text in (
+                    ("vpf_over_rrt_length", True, "VPF-RRT* is shorter than RRT*"),
+                    ("vpf_over_rrt_tta", True, "VPF-RRT* turns less than RRT*"),
+                    ("bspline_over_rrt_length", False, "B-spline-RRT* is longer than RRT*"),
+                    ("bspline_over_rrt_tta", False, "B-spline-RRT* turns more than RRT*")):
+                e = t[basis].get(ratio) or {}
+                lo, hi = PAPER_004[ratio]
+                mean = e.get("mean")
+                out.append({
+                    "paper": "004", "family": t["family"], "basis": basis,
+                    "ordering": text, "verdict": _side(e.get("ci95"), below),
+                    "mean": mean, "ci95": e.get("ci95"), "n": e.get("n"),
+                    "paper_range": [lo, hi],
+                    "in_paper_range": None if mean is None else lo <= mean <= hi})
+    summary = result.get("summary", {}).get("replan-ga", {}).get("transit")
+    r = result.get("replan_002", {})
+    if summary:
+        rate = summary["success_rate"]
+        out.append({"paper": "002", "family": "transit",
+                    "ordering": "the GA plans the 400 m map with its moving ships",
+                    "verdict": "holds" if rate == 1.0 else "holds in part" if rate > 0.0
+                    else "does not hold", "success": rate,
+                    "ci95": summary["success_ci95"], "n": summary["episodes"]})
+    if r.get("count"):
+        out.append({"paper": "002", "family": "transit",
+                    "ordering": "re-planning takes less than the paper's 0.98 s",
+                    "verdict": "holds" if r["p99_ms"] < 980.0 else "does not hold",
+                    "p50_ms": r["p50_ms"], "p99_ms": r["p99_ms"], "n": r["count"]})
+    trend = result.get("colregs_001", {}).get("table_iii")
+    if trend:
+        imp, con = trend["improved"], trend["conventional"]
+        out.append(_compare_001("the improved GA is faster per step (160 -> 100 ms)",
+                                imp.get("ms_per_step_mean_ci95"),
+                                con.get("ms_per_step_mean_ci95"), lower=True))
+        out.append(_compare_001("the improved GA succeeds more often (85 -> 98 %)",
+                                imp.get("success_ci95"), con.get("success_ci95"), lower=False))
+        out.append(_compare_001("the improved GA needs fewer generations (300-400 -> 200-300)",
+                                imp.get("generations_per_step_ci95"),
+                                con.get("generations_per_step_ci95"), lower=True))
+        a, b = imp.get("final_fitness_std"), con.get("final_fitness_std")
+        out.append({"paper": "001", "family": "colregs, encounters",
+                    "ordering": "the improved GA's final fitness varies less (1.876 -> 0.945)",
+                    "verdict": "not measured" if a is None or b is None else
+                    ("holds" if a < b else "does not hold"), "improved": a, "conventional": b})
+    return out
+
+
+def _compare_001(text: str, improved: list[float] | None, conventional: list[float] | None,
+                 lower: bool) -> dict[str, Any]:
+    """001 Table III: 'holds' when the improved GA's interval lies wholly on the better side
+    of the conventional one's, 'does not hold' when wholly on the worse, else 'undecided'."""
+    if not improved or not conventional:
+        verdict = "not measured"
+    elif (improved[1] < conventional[0]) if lower else (improved[0] > conventional[1]):
+        verdict = "holds"
+    elif (improved[0] > conventional[1]) if lower else (improved[1] < conventional[0]):
+        verdict = "does not hold"
+    else:
+        verdict = "undecided (the intervals overlap)"
+    return {"paper": "001", "family": "colregs, encounters", "ordering": text,
+            "verdict": verdict, "improved_ci95": improved, "conventional_ci95": conventional}
 
 
 def replan_002(rows: list[dict[str, Any]]) -> dict[str, Any]:
@@ -561,8 +742,10 @@ def replan_002(rows: list[dict[str, Any]]) -> dict[str, Any]:
 
 
 def colregs_001(rows: list[dict[str, Any]], seeds: int,
-                progress: Callable[[str], None] | None = None) -> dict[str, Any]:
-    """Starboard rule over colregs-ga's COLREGs episodes; Tab. III improved vs conventional."""
+                progress: Callable[[str], None] | None = None,
+                scenarios: list[Scenario] | None = None) -> dict[str, Any]:
+    """Starboard rule over colregs-ga's COLREGs episodes; Tab. III improved vs conventional
+    over `scenarios` (default: the colregs family's public cases), with 95 % intervals."""
     mine = [r for r in rows if r["planner"] == "colregs-ga" and r["family"] == "colregs"]
     if not mine:
         return {"cases": 0, "starboard_ok": None}
@@ -579,7 +762,7 @@ def colregs_001(rows: list[dict[str, Any]], seeds: int,
     trend = {}
     for label, improved in (("improved", True), ("conventional", False)):
         times, succ, gens, fit = [], [], [], []
-        for sc in colregs_cases():
+        for sc in scenarios or colregs_cases():
             for seed in range(1, seeds + 1):
                 watch = Stopwatch()
                 try:
@@ -593,8 +776,11 @@ def colregs_001(rows: list[dict[str, Any]], seeds: int,
                 gens.append(m["generations_per_step_mean"])
                 fit.append(m["fitness_final"])
         trend[label] = {"ms_per_step": round(float(np.median(times)), 3) if times else None,
+                        "ms_per_step_mean_ci95": mean_ci(times),
                         "success_rate": round(sum(succ) / max(len(succ), 1), 4),
+                        "success_ci95": wilson(sum(succ), len(succ)), "runs": len(succ),
                         "generations_per_step": round(float(np.mean(gens)), 3) if gens else None,
+                        "generations_per_step_ci95": mean_ci(gens),
                         "final_fitness_std": round(float(np.std(fit)), 6) if fit else None}
         if progress:
             progress(f"colregs-ga {label}: {trend[label]}")
@@ -617,18 +803,51 @@ def render_markdown(result: dict[str, Any]) -> str:
           _f(e["max_turn_deg"]), _f(e["plan_time_ms"]), _f(e.get("track_mean_dev_m"), 2),
           _f(e.get("colregs_score"), 2)]
          for pl, fams in result["summary"].items() for fam, e in fams.items()))
-    t = result["table_004"]
-    lines += ["", "Paper 004 Tab. 5/6 shape (dense family, means over maps and seeds):", ""]
-    lines += markdown_table(
-        ["algorithm", "length m", "TTA deg", "plan ms", "sailing s", "NI"],
-        ([pl, f"{e['length_m']:.1f}", f"{e['total_turn_deg']:.1f}", f"{e['plan_time_ms']:.0f}",
-          f"{e['duration_s']:.1f}", f"{e['normalization_index']:.3f}"]
-         for pl in ("rrt-star", "bspline-rrt-star", "vpf-rrt-star", "ompl:RRTstar",
-                    "ompl:InformedRRTstar", "ompl:BITstar") if pl in t for e in (t[pl],)))
-    lines += [""]
-    lines += markdown_table(["ratio", "here", "paper"],
-                            ([k, _f(t.get(k), 3), f"{rng[0]}-{rng[1]}"]
-                             for k, rng in PAPER_004.items()))
+    for key in ("table_004", "table_004_walls"):
+        t = result.get(key)
+        if not t or not t.get("pairs"):
+            continue
+        lines += ["", f"Paper 004 Tab. 5/6 shape ({t.get('family', 'dense')} family, means over "
+                  "maps and seeds):", ""]
+        lines += markdown_table(
+            ["algorithm", "length m", "TTA deg", "plan ms", "sailing s", "NI"],
+            ([pl, f"{e['length_m']:.1f}", f"{e['total_turn_deg']:.1f}",
+              f"{e['plan_time_ms']:.0f}", f"{e['duration_s']:.1f}",
+              f"{e['normalization_index']:.3f}"]
+             for pl in ("rrt-star", "bspline-rrt-star", "vpf-rrt-star", "ompl:RRTstar",
+                        "ompl:InformedRRTstar", "ompl:BITstar") if pl in t for e in (t[pl],)))
+        lines += [""]
+        lines += markdown_table(
+            ["ratio", "finished (mean, 95 % interval)", "raw", "paper"],
+            ([k, _mean_ci(t.get("finished", {}).get(k)), _mean_ci(t.get("raw", {}).get(k)),
+              f"{rng[0]}-{rng[1]}"] for k, rng in PAPER_004.items()))
+    if result.get("difficulty"):
+        lines += ["", "Difficulty (the shortest plan any planner found, over the straight "
+                  "line; paper 004's maps: 1.36-1.45):", ""]
+        lines += markdown_table(
+            ["family", "n", "median", "mean", "95 % interval"],
+            ([fam, d["n"], _f(d["ratio_median"], 3), _f(d["ratio_mean"], 3),
+              "-" if not d["ratio_ci95"] else f"[{d['ratio_ci95'][0]:.3f}, "
+              f"{d['ratio_ci95'][1]:.3f}]"] for fam, d in result["difficulty"].items()))
+    orderings = paper_orderings(result)  # from the figures, by the rules of this version
+    if orderings:
+        lines += ["", "The seed papers' orderings on these maps:", ""]
+        for o in orderings:
+            where = f"{o['family']}" + (f", {o['basis']} paths" if "basis" in o else "")
+            ci = o.get("ci95") or o.get("improved_ci95")
+            lines.append(f"- {o['paper']} ({where}): {o['ordering']}: {o['verdict']}"
+                         + ("" if o.get("mean") is None else f" (mean {o['mean']}, 95 % "
+                            f"interval {ci}, n = {o['n']}; paper {o['paper_range']})")
+                         + ("" if "improved_ci95" not in o else
+                            f" (improved {o['improved_ci95']}, conventional "
+                            f"{o['conventional_ci95']})")
+                         + ("" if "success" not in o else
+                            f" (success {o['success']}, 95 % interval {o['ci95']}, "
+                            f"n = {o['n']})")
+                         + ("" if "p99_ms" not in o else
+                            f" (p50 {o['p50_ms']} ms, p99 {o['p99_ms']} ms, n = {o['n']})")
+                         + ("" if "conventional" not in o else
+                            f" (improved {o['improved']}, conventional {o['conventional']})"))
     r = result["replan_002"]
     lines += ["", f"Re-planning (002): {r['count']} re-plans, p50 {_f(r['p50_ms'], 2)} ms, "
               f"p99 {_f(r['p99_ms'], 2)} ms (paper 0.98 s in MATLAB)."]
@@ -638,12 +857,23 @@ def render_markdown(result: dict[str, Any]) -> str:
     if "table_iii" in c:
         lines += [""]
         lines += markdown_table(
-            ["GA (001 Tab. III)", "ms per step", "success", "generations per step",
-             "final fitness std"],
-            ([label, _f(e["ms_per_step"], 2), f"{e['success_rate']:.2f}",
-              _f(e["generations_per_step"], 1), _f(e["final_fitness_std"], 4)]
+            ["GA (001 Tab. III)", "runs", "ms per step (median; mean 95 %)",
+             "success (95 %)", "generations per step (95 %)", "final fitness std"],
+            ([label, e.get("runs", "-"),
+              f"{_f(e['ms_per_step'], 2)} ({e.get('ms_per_step_mean_ci95')})",
+              f"{e['success_rate']:.2f} ({e.get('success_ci95')})",
+              f"{_f(e['generations_per_step'], 1)} ({e.get('generations_per_step_ci95')})",
+              _f(e["final_fitness_std"], 4)]
              for label, e in c["table_iii"].items()))
     return "\n".join(lines) + "\n"
+
+
+def _mean_ci(e: dict[str, Any] | None) -> str:
+    if not e or e.get("mean") is None:
+        return "-"
+    ci = e.get("ci95")
+    return f"{e['mean']:.3f}" + ("" if not ci else f" [{ci[0]:.3f}, {ci[1]:.3f}]") + \
+        f" (n {e.get('n')})"
 
 
 def _f(v: float | None, nd: int = 1) -> str:

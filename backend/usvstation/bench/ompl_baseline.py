@@ -156,8 +156,8 @@ def _cost_after(ss: Any, si: Any, og: Any, ob: Any, planner: str, budget: float)
     if planner == "PRMstar":  # grows its roadmap on a thread of its own: OMPL's own timer
         solved = ss.solve(budget)
     else:
-        cpu = Stopwatch()
-        solved = ss.solve(ob.PlannerTerminationCondition(lambda: cpu.cpu() > budget))
+        spent = Stopwatch()  # CPU time of this process (the curve's one run)
+        solved = ss.solve(ob.PlannerTerminationCondition(lambda: spent.cpu() > budget))
     if not solved or not ss.haveExactSolutionPath():
         return None
     return round(float(ss.getSolutionPath().length()), 4)

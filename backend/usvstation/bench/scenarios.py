@@ -293,6 +293,134 @@ def outline_astern_traffic(seed: int) -> Scenario:
     })
 
 
+# --- the review's kinds (issue 27): passages, ships at the ramp, strong cross current, far ---
+
+def _wall(x0: float, y0: float, x1: float, y1: float, r: float = 2.0) -> list[dict]:
+    """Touching circles of radius r from (x0, y0) to (x1, y1), 1.5 r apart."""
+    n = max(int(math.hypot(x1 - x0, y1 - y0) / (1.5 * r)), 1)
+    return [{"x": round(x0 + (x1 - x0) * k / n, 2), "y": round(y0 + (y1 - y0) * k / n, 2),
+             "radius": r} for k in range(n + 1)]
+
+
+def _recovery(name: str, sx: float, sy: float, obstacles: list[dict], rng: np.random.Generator,
+              environment: dict | None = None, speed: float = 1.0) -> Scenario:
+    vessel = Vessel()
+    obstacles = _clear_of(obstacles, [(sx, sy), (0.0, 0.0)], vessel)
+    return parse_scenario({
+        "name": name, "origin": _ORIGIN,
+        "start": {"x": round(sx, 2), "y": round(sy, 2),
+                  "heading_deg": round(math.degrees(math.atan2(-sy, -sx)) % 360, 2),
+                  "speed": speed},
+        "obstacles": obstacles, "vessel": vessel.model_dump(),
+        "environment": environment or _environment(rng),
+    })
+
+
+def narrow_passage(seed: int) -> Scenario:
+    """A wall across the approach, 150-300 m long, with one gap of 8-14 m (the only way
+    through) 15-60 m off the direct line."""
+    rng = np.random.default_rng(90_000 + seed)
+    sx, sy = rng.uniform(90.0, 150.0), rng.uniform(-20.0, 20.0)
+    wx = rng.uniform(0.35, 0.65) * sx
+    gap_y = rng.uniform(15.0, 60.0) * rng.choice([-1.0, 1.0])
+    gap = rng.uniform(8.0, 14.0)
+    half = rng.uniform(75.0, 150.0)
+    walls = (_wall(wx, -half, wx, gap_y - gap / 2 - 2.0)
+             + _wall(wx, gap_y + gap / 2 + 2.0, wx, half))
+    return _recovery(f"narrow-passage-{seed}", sx, sy, walls, rng)
+
+
+def harbour_entrance(seed: int) -> Scenario:
+    """Two staggered breakwaters across the approach, each leaving a 10-16 m entrance at
+    opposite ends: an S-shaped way in."""
+    rng = np.random.default_rng(91_000 + seed)
+    sx, sy = rng.uniform(110.0, 160.0), rng.uniform(-15.0, 15.0)
+    x_out, x_in = rng.uniform(0.55, 0.7) * sx, rng.uniform(0.25, 0.4) * sx
+    side = rng.choice([-1.0, 1.0])
+    width = rng.uniform(10.0, 16.0)
+    open_out, open_in = side * rng.uniform(20.0, 40.0), -side * rng.uniform(10.0, 30.0)
+    walls = []
+    for wx, opening in ((x_out, open_out), (x_in, open_in)):
+        if opening > 0:
+            walls += _wall(wx, -90.0, wx, opening - width / 2 - 2.0)
+        else:
+            walls += _wall(wx, opening + width / 2 + 2.0, wx, 90.0)
+    return _recovery(f"harbour-entrance-{seed}", sx, sy, walls, rng)
+
+
+def ship_at_ramp(seed: int) -> Scenario:
+    """A ship 3-6 m in radius crossing the ramp axis 8-25 m out at 2-4 m/s, timed to pass
+    about when the boat arrives."""
+    rng = np.random.default_rng(92_000 + seed)
+    dist, sx, sy = _out_at_sea(rng, 60.0, 130.0, 30.0)
+    cross_x, speed = rng.uniform(8.0, 25.0), rng.uniform(2.0, 4.0) * rng.choice([-1.0, 1.0])
+    t_cross = (dist - cross_x) / 1.8 + rng.uniform(-10.0, 10.0)
+    ship = {"x": round(cross_x, 2), "y": round(-speed * max(t_cross, 1.0), 2),
+            "radius": round(rng.uniform(3.0, 6.0), 2), "vx": 0.0, "vy": round(speed, 3)}
+    return _recovery(f"ship-at-ramp-{seed}", sx, sy, [ship], rng)
+
+
+def head_on(seed: int) -> Scenario:
+    """A ship coming down the approach at 1.5-3x the boat's top speed, head-on, meeting the
+    boat 30-70 % of the way in."""
+    rng = np.random.default_rng(93_000 + seed)
+    dist, sx, sy = _out_at_sea(rng, 70.0, 140.0, 20.0)
+    frac = rng.uniform(0.3, 0.7)
+    route = math.atan2(-sy, -sx)
+    speed = rng.uniform(1.5, 3.0) * Vessel().speed_max
+    vx, vy = -speed * math.cos(route), -speed * math.sin(route)  # towards the start
+    t_meet = frac * dist / 1.8
+    px, py = sx + frac * (0.0 - sx), sy + frac * (0.0 - sy)
+    ship = {"x": round(px - vx * t_meet, 2), "y": round(py - vy * t_meet, 2),
+            "radius": round(rng.uniform(3.0, 6.0), 2), "vx": round(vx, 3), "vy": round(vy, 3)}
+    return _recovery(f"head-on-{seed}", sx, sy, [ship], rng)
+
+
+def cross_current(seed: int) -> Scenario:
+    """A random recovery in a 1.2 m/s current across the ramp axis (60-120 deg off it)."""
+    rng = np.random.default_rng(94_000 + seed)
+    data = random_recovery(300 + seed).model_dump()
+    data["environment"]["current_speed"] = 1.2
+    data["environment"]["current_dir_deg"] = round(
+        (rng.uniform(60.0, 120.0) * rng.choice([-1.0, 1.0])) % 360.0, 1)
+    data["name"] = f"cross-current-{seed}"
+    return parse_scenario(data)
+
+
+def far_start(seed: int) -> Scenario:
+    """A recovery from 1.2-1.6 km out with 4-10 obstacles along the way."""
+    rng = np.random.default_rng(95_000 + seed)
+    _, sx, sy = _out_at_sea(rng, 1200.0, 1600.0, 20.0)
+    obstacles = [{"x": round(sx * f + rng.normal(0.0, 10.0), 2),
+                  "y": round(sy * f + rng.normal(0.0, 25.0), 2),
+                  "radius": round(rng.uniform(2.0, 8.0), 2)}
+                 for f in rng.uniform(0.05, 0.95, size=int(rng.integers(4, 11)))]
+    return _recovery(f"far-start-{seed}", sx, sy, obstacles, rng)
+
+
+def goal_blocked(seed: int) -> Scenario:
+    """A slow vessel lying on the run-in for the first 25-35 s, then drifting clear."""
+    rng = np.random.default_rng(96_000 + seed)
+    _, sx, sy = _out_at_sea(rng, 40.0, 90.0, 30.0)
+    block_x, clear_s = rng.uniform(6.0, 15.0), rng.uniform(25.0, 35.0)
+    r = rng.uniform(2.0, 3.5)
+    speed = (r + 6.0) / clear_s * rng.choice([-1.0, 1.0])  # off the axis after clear_s
+    blocker = {"x": round(block_x, 2), "y": 0.0, "radius": round(r, 2), "vx": 0.0,
+               "vy": round(speed, 3)}
+    return _recovery(f"goal-blocked-{seed}", sx, sy, [blocker], rng)
+
+
+REVIEW_FAMILIES = {
+    "narrow_passage": narrow_passage,
+    "harbour_entrance": harbour_entrance,
+    "ship_at_ramp": ship_at_ramp,
+    "head_on": head_on,
+    "cross_current": cross_current,
+    "far_start": far_start,
+    "goal_blocked": goal_blocked,
+}
+
+
 HIDDEN_FAMILIES = {
     "pointing_away": pointing_away,
     "strong_current": strong_current,

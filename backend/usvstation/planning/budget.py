@@ -63,6 +63,16 @@ class Budget:
         self.wall_started = self.wall()
         self.wall_deadline = self.wall_started + WALL_FACTOR * self.time_budget_s
 
+    def excluding(self, work: Callable[[], object], when: Callable[[], bool]) -> None:
+        """Run `work`, outside the budget when `when()` says so afterwards: both deadlines
+        move on by the time it took (the compiled kernels' compilation, planning/warm.py,
+        is not planning; their load from the cache counts like an import)."""
+        cpu, wall = self.clock(), self.wall()
+        work()
+        if when():
+            self.deadline += self.clock() - cpu
+            self.wall_deadline += self.wall() - wall
+
     def spend(self, n: int = 1) -> None:
         self.evaluations += int(n)
 

@@ -87,9 +87,13 @@ def turn_angles(headings: np.ndarray) -> np.ndarray:
 
 def first_turn(paths: PathBatch, problem: Problem) -> np.ndarray:
     """Turn of the hull from the start heading onto the first leg, rad (issue 12)."""
-    h0 = np.arctan2(paths.seg_dy[:, 0], paths.seg_dx[:, 0])
+    return first_turn_of(np.arctan2(paths.seg_dy[:, 0], paths.seg_dx[:, 0]), paths.v[:, 0],
+                         problem)
+
+
+def first_turn_of(h0: np.ndarray, v0: np.ndarray, problem: Problem) -> np.ndarray:
+    """`first_turn` of first legs of course h0 (rad) sailed at v0 (over ground)."""
     cx, cy = problem.current
-    v0 = paths.v[:, 0]
     hull = np.arctan2(v0 * np.sin(h0) - cy, v0 * np.cos(h0) - cx)
     return np.abs(np.mod(hull - problem.start_heading + np.pi, 2.0 * np.pi) - np.pi)
 

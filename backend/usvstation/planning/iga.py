@@ -27,9 +27,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from usvstation.planning import kernel_ga
 from usvstation.planning.budget import Budget
 from usvstation.planning.encoding import GeneLayout, PathBatch
-from usvstation.planning.fitness import Evaluation, Evaluator
+from usvstation.planning.fitness import Evaluation, Evaluator, first_turn_of
+from usvstation.planning.kernel import eq12_batch
+from usvstation.planning.kernel_ga import LayoutTables
 from usvstation.planning.preheat import PreheatReport, preheat, random_levels
 from usvstation.planning.problem import Problem
 from usvstation.scenario.options import IGAOptions
@@ -66,7 +69,7 @@ class _Population:
 
 def run_iga(
     problem: Problem, opts: IGAOptions, layout: GeneLayout | None = None,
-    budget: Budget | None = None,
+    budget: Budget | None = None, compiled: bool | None = None,
 ) -> IGAResult:
     """Plan with the IGA; deterministic for a given `opts.seed`.
 
@@ -76,6 +79,10 @@ def run_iga(
     points that do not depend on time. Its wall deadline, the safety net, is
     checked there too and after every preheating draw (stop_reason
     "time_budget"), so a run overshoots it by at most one such batch.
+
+    `compiled` (default: where numba is available) runs each generation in the compiled
+    kernels (planning/kernel_ga.py); False runs the NumPy references, which give the same
+    result bit for bit.
     """
     budget = budget or Budget(opts.evaluation_budget, opts.time_budget_s)
     t0 = budget.wall()
@@ -86,6 +93,7 @@ def run_iga(
     pm = opts.mutation_rate or min(0.5, 1.5 / layout.n_bits)
 
     evaluator = Evaluator(problem, opts, layout.segment_x_range())
+    engine = _Compiled.of(layout, evaluator, problem, opts) if compiled is not False else None
 
     def fitness(codes: np.ndarray) -> tuple[np.ndarray, bool]:
         """Eq. 12 of `codes` in chunks, the budget checked after each; rows left out when
@@ -93,14 +101,17 @@ def run_iga(
         out = np.zeros(codes.shape[0])
         for k in range(0, codes.shape[0], EVAL_CHUNK):
             part = codes[k:k + EVAL_CHUNK]
-            out[k:k + part.shape[0]] = evaluator.fitness(layout.decode_codes(part))
+            out[k:k + part.shape[0]] = (
+                engine.fitness(part) if engine is not None
+                else evaluator.fitness(layout.decode_codes(part)))
             budget.spend(part.shape[0])
             if k + EVAL_CHUNK < codes.shape[0] and budget.exhausted():
                 return out, False
         return out, True
 
     evaluations_before = budget.evaluations
-    levels, fresh, report = _foundation(layout, problem, opts, rng, expired)
+    levels, fresh, report = _foundation(layout, problem, opts, rng, expired,
+                                        compiled=engine is not None)
     codes = layout.levels_to_codes(levels)
     first_fit, complete = fitness(codes)
     pop = _Population(codes, first_fit)
@@ -113,23 +124,16 @@ def run_iga(
     n_newborn = pop_n // 2  # SSIH candidates per generation, sized from the last death toll
     while gen < opts.generations_max and stop not in ("time_budget", "max_evaluations"):
         gen += 1
-        order = np.argsort(-pop.fit, kind="stable")
-        elite = order[:n_elite]
-        children = _offspring(layout, pop, pop_n - n_elite, opts, pm, rng)
-        newborn = children[:0]
+        n_parents = max(n_elite, 1) if best_fit > 0.0 else 0
+        if engine is not None:
+            pop, n_dead, fresh, report = engine.generation(
+                pop, n_parents, fresh, n_newborn, report, rng, pm, fitness, expired)
+        else:
+            pop, n_dead, fresh, report = _generation_numpy(
+                layout, problem, opts, pop, n_parents, fresh, n_newborn, report, rng, pm,
+                fitness, expired)
         if opts.ssih:
-            parents = pop.codes[order[: max(n_elite, 1)]] if best_fit > 0.0 else children[:0]
-            newborn, fresh, report = _newborns(
-                layout, problem, opts, rng, parents, fresh, n_newborn, report, expired
-            )
-        batch_fit, _ = fitness(np.concatenate([children, newborn]))
-        child_fit, born_fit = batch_fit[: children.shape[0]], batch_fit[children.shape[0] :]
-        if opts.ssih:
-            n_dead = int(np.count_nonzero(child_fit <= 0.0))
-            children, child_fit = _sacrifice(children, child_fit, newborn, born_fit)
             n_newborn = min(pop_n, max(8, (3 * n_dead) // 2))
-        pop = _Population(np.concatenate([pop.codes[elite], children]),
-                          np.concatenate([pop.fit[elite], child_fit]))
         i = int(np.argmax(pop.fit))
         if pop.fit[i] > best_fit:
             best_fit, best_codes = float(pop.fit[i]), pop.codes[i].copy()
@@ -153,7 +157,7 @@ def run_iga(
 
 def _foundation(
     layout: GeneLayout, problem: Problem, opts: IGAOptions, rng: np.random.Generator,
-    expired: Callable[[], bool] | None = None,
+    expired: Callable[[], bool] | None = None, compiled: bool | None = None,
 ) -> tuple[np.ndarray, np.ndarray, PreheatReport]:
     """Initial population (levels), a stock of fresh preheated paths for SSIH, the report.
 
@@ -166,14 +170,15 @@ def _foundation(
         empty = np.zeros((0, layout.n_genes), dtype=np.int64)
         return random_levels(layout, rng, pop_n), empty, PreheatReport()
     grown, ok, report = preheat(layout, problem, opts, rng, 2 * pop_n, need=pop_n,
-                                expired=expired)
+                                expired=expired, compiled=compiled)
     if ok.sum() < max(4, pop_n // 4) and not (expired and expired()):
         # hard problem: one more round with many more candidates and draws per waypoint
         harder = opts.model_copy(update={
             "candidates": 4 * opts.candidates, "preheat_retries": 4 * opts.preheat_retries,
         })
         more, ok_more, rep = preheat(layout, problem, harder, rng, pop_n,
-                                     need=max(4, pop_n // 4) - int(ok.sum()), expired=expired)
+                                     need=max(4, pop_n // 4) - int(ok.sum()), expired=expired,
+                                     compiled=compiled)
         report.merge(rep)
         grown, ok = np.concatenate([grown, more]), np.concatenate([ok, ok_more])
     grown = grown[ok]
@@ -183,9 +188,153 @@ def _foundation(
     return levels, layout.levels_to_codes(fresh), report
 
 
+Fitness = Callable[[np.ndarray], tuple[np.ndarray, bool]]
+
+
+def _generation_numpy(
+    layout: GeneLayout, problem: Problem, opts: IGAOptions, pop: _Population, n_parents: int,
+    fresh: np.ndarray, n_newborn: int, report: PreheatReport, rng: np.random.Generator,
+    pm: float, fitness: Fitness, expired: Callable[[], bool] | None,
+) -> tuple[_Population, int, np.ndarray, PreheatReport]:
+    """One generation with the NumPy operators (the reference of `_Compiled.generation`):
+    elite group, offspring, SSIH's newborns and sacrifice. Returns the new population,
+    the children that died, the fresh stock left and the preheating report."""
+    n_elite = opts.elite_count
+    order = np.argsort(-pop.fit, kind="stable")
+    elite = order[:n_elite]
+    children = _offspring(layout, pop, pop.codes.shape[0] - n_elite, opts, pm, rng)
+    newborn = children[:0]
+    if opts.ssih:
+        parents = pop.codes[order[:n_parents]]
+        newborn, fresh, report = _newborns(
+            layout, problem, opts, rng, parents, fresh, n_newborn, report, expired
+        )
+    batch_fit, _ = fitness(np.concatenate([children, newborn]))
+    child_fit, born_fit = batch_fit[: children.shape[0]], batch_fit[children.shape[0] :]
+    n_dead = int(np.count_nonzero(child_fit <= 0.0))
+    if opts.ssih:
+        children, child_fit = _sacrifice(children, child_fit, newborn, born_fit)
+    pop = _Population(np.concatenate([pop.codes[elite], children]),
+                      np.concatenate([pop.fit[elite], child_fit]))
+    return pop, n_dead, fresh, report
+
+
+@dataclass
+class _Compiled:
+    """One generation and eq. 12 in compiled calls (planning/kernel_ga.py, kernel.py).
+
+    The random numbers are drawn here with NumPy, in the order and shapes the NumPy
+    operators draw them, and so are the transcendental functions (arctan2, sin, cos,
+    exp); the kernels do the rest. The results equal the NumPy route bit for bit.
+    """
+
+    layout: GeneLayout
+    problem: Problem
+    opts: IGAOptions
+    evaluator: Evaluator
+    tables: LayoutTables
+    eq12_args: tuple[np.ndarray, ...] | None
+    first_untabled: bool  # the first-turn gate applies and is computed per path
+
+    @classmethod
+    def of(cls, layout: GeneLayout, evaluator: Evaluator, problem: Problem,
+           opts: IGAOptions) -> _Compiled | None:
+        """The compiled route for this run, or None without numba."""
+        if not kernel_ga.AVAILABLE:
+            return None
+        first = None
+        if problem.start_heading is not None:
+            def first(dx: np.ndarray, dy: np.ndarray) -> np.ndarray:
+                h0 = np.arctan2(dy, dx)
+                return first_turn_of(h0, layout.start_speed, problem) > problem.turn_max
+        tables = LayoutTables.of(layout, first)
+        return cls(layout, problem, opts, evaluator, tables, evaluator._kernel_args(),
+                   problem.start_heading is not None and tables.first_table.shape[0] == 0)
+
+    def fitness(self, codes: np.ndarray) -> np.ndarray:
+        """`Evaluator.fitness` of the decoded codes (one chunk)."""
+        if self.eq12_args is None:  # EG3's linear fitness: the NumPy evaluator
+            return self.evaluator.fitness(self.layout.decode_codes(codes))
+        x, y, v, t, seg, dx, dy, first_bad = kernel_ga.decode(codes, *self.tables.mapping())
+        heading = np.arctan2(dy, dx)
+        if self.first_untabled:  # too many first waypoints for a table: per path
+            problem = self.problem
+            first_bad = first_turn_of(heading[0], v[0], problem) > problem.turn_max
+        return eq12_batch(x, y, v, t, seg, heading, first_bad, *self.eq12_args)
+
+    def generation(
+        self, pop: _Population, n_parents: int, fresh: np.ndarray, n_newborn: int,
+        report: PreheatReport, rng: np.random.Generator, pm: float, fitness: Fitness,
+        expired: Callable[[], bool] | None,
+    ) -> tuple[_Population, int, np.ndarray, PreheatReport]:
+        """`_generation_numpy` with the operators compiled."""
+        layout, opts, tab = self.layout, self.opts, self.tables
+        pop_n, n_elite = pop.codes.shape[0], opts.elite_count
+        n = pop_n - n_elite
+        pairs = (n + 1) // 2
+        # _offspring's and mutate's draws
+        entrants = rng.integers(0, pop_n, size=(2 * pairs, opts.tournament_size))
+        cross_u = rng.random(pairs)
+        cut_raw = rng.integers(1, max(layout.n_bits, 2), size=pairs)
+        total = n * layout.n_bits
+        flat = rng.choice(total, size=rng.binomial(total, pm), replace=False)
+        # _newborns' draws
+        pool, n_local = pop.codes[:0], 0
+        if opts.ssih:
+            pool, n_local, fresh, report = self._newborn_pool(
+                n_parents, fresh, n_newborn, report, rng, expired)
+        local = _local_draws(layout, rng, n_parents, n_local)
+        order = np.argsort(-pop.fit, kind="stable")
+        batch = kernel_ga.breed(
+            pop.codes, pop.fit, order, n, entrants, cross_u, opts.crossover_rate, cut_raw, flat,
+            pool, n_parents, *local, tab.gene_bits, tab.gene_count, tab.gene_start, tab.gene_of_bit,
+            tab.bit_shift, tab.x_count, tab.cone_gene, tab.cone_m, tab.y_res)
+        batch_fit, _ = fitness(batch)
+        codes, fit, n_dead = kernel_ga.next_population(pop.codes, pop.fit, order, n_elite,
+                                                       batch, batch_fit, n, opts.ssih)
+        return _Population(codes, fit), n_dead, fresh, report
+
+    def _newborn_pool(
+        self, n_parents: int, fresh: np.ndarray, n: int, report: PreheatReport,
+        rng: np.random.Generator, expired: Callable[[], bool] | None,
+    ) -> tuple[np.ndarray, int, np.ndarray, PreheatReport]:
+        """`_newborns` up to its local re-initialisations: (fresh or random newborns,
+        how many local re-initialisations follow, fresh stock left, report)."""
+        layout, opts = self.layout, self.opts
+        if not opts.preheat:
+            pool = layout.levels_to_codes(random_levels(layout, rng, max(1, n // 5)))
+            if n_parents:
+                return pool, n - pool.shape[0], fresh, report
+            return layout.levels_to_codes(random_levels(layout, rng, n)), 0, fresh, report
+        if n_parents == 0 and fresh.shape[0] == 0:
+            grown, ok, rep = preheat(layout, self.problem, opts, rng, n, expired=expired)
+            report.merge(rep)
+            fresh = layout.levels_to_codes(grown[ok])
+        n_fresh = min(fresh.shape[0], n if n_parents == 0 else max(1, n // 5))
+        return fresh[:n_fresh], (n - n_fresh) if n_parents else 0, fresh[n_fresh:], report
+
+
+def _local_draws(layout: GeneLayout, rng: np.random.Generator, n_parents: int,
+                 n: int) -> tuple[np.ndarray, ...]:
+    """`local_reinit`'s random numbers, drawn in its order: parent, centre, half width,
+    sign, exp(log amplitude), the (n, n_mid) uniforms (none for n = 0)."""
+    if n == 0:
+        empty = np.zeros(0, dtype=np.int64)
+        return empty, empty, empty, np.zeros(0), np.zeros(0), np.zeros((0, layout.n_mid))
+    pick = rng.integers(0, n_parents, size=n)
+    centre = rng.integers(0, layout.n_mid, size=n)
+    half = rng.integers(0, 4, size=n)
+    sign_u = rng.random(n)
+    amp_exp = np.exp(rng.uniform(*_BUMP_LOG_M, size=n))
+    return pick, centre, half, sign_u, amp_exp, rng.random((n, layout.n_mid))
+
+
 def _elite_mean(fit: np.ndarray, n_elite: int) -> float:
+    """Mean fitness of the elite group: np.mean of the k largest, without its wrapper."""
     k = max(n_elite, 1)
-    return float(np.mean(np.partition(fit, -k)[-k:]))
+    top = fit.copy()
+    top.partition(fit.shape[0] - k)
+    return float(np.add.reduce(top[-k:]) / k)
 
 
 def _offspring(layout: GeneLayout, pop: _Population, n: int, opts: IGAOptions, pm: float,
@@ -247,7 +396,8 @@ def _newborns(
             pool = [layout.levels_to_codes(random_levels(layout, rng, n))]
         return np.concatenate(pool), fresh, report
     if parents.shape[0] == 0 and fresh.shape[0] == 0:
-        grown, ok, rep = preheat(layout, problem, opts, rng, n, expired=expired)
+        grown, ok, rep = preheat(layout, problem, opts, rng, n, expired=expired,
+                                 compiled=False)
         report.merge(rep)
         fresh = layout.levels_to_codes(grown[ok])
     n_fresh = min(fresh.shape[0], n if parents.shape[0] == 0 else max(1, n // 5))

@@ -6,15 +6,17 @@ most of its time in the fixed cost of about 40 NumPy calls per batch. This
 kernel does the same arithmetic path by path in one call: the hard gates
 (acceleration, speed, turn, first turn, speed through the water), the
 collision test of eq. 9 over the evaluator's precomputed (segment,
-obstacle) pairs, stopping at a path's first hit, the four terms and eq. 12.
+obstacle) pairs, stopping at a path's first hit and skipping the pairs whose
+circle, swept over the segment's time window, cannot reach the segment's box
+(by more than `SLACK`), the four terms and eq. 12.
 Every expression is written in the reference's order, so the values agree
 bit for bit (tests/unit/test_plan_kernel.py checks it on random inputs); the
 transcendental functions whose NumPy versions are vectorised differently from
 libm (arctan2, sin, cos) stay in NumPy: the headings and the first-turn flags
 come in as arrays.
 
-Compiled with `cache=True` (first use in a fresh environment compiles for
-about a second: `bench planner` reports it as `cold_start`); without numba
+Compiled with `cache=True` (planning/warm.py loads or compiles every kernel of the
+planner once per process; `bench planner` reports the cold start); without numba
 the evaluator falls back to the NumPy reference.
 """
 
@@ -31,6 +33,10 @@ except ImportError:  # pragma: no cover - numba is a dependency; NumPy is the fa
 
 AVAILABLE = njit is not None
 _EPS = 1e-9
+# m: a pair is skipped only when its swept circle stays this much further than its radius
+# from the segment's box, far beyond eq. 9's rounding (1e-7 m at 20 km), so that the skip
+# never changes a verdict
+SLACK = 1e-6
 
 
 def _eq12_batch(x: np.ndarray, y: np.ndarray, v: np.ndarray, t: np.ndarray,
@@ -91,6 +97,15 @@ def _eq12_batch(x: np.ndarray, y: np.ndarray, v: np.ndarray, t: np.ndarray,
             ox, oy, ovx, ovy, r = (pair_obs[k, 0], pair_obs[k, 1], pair_obs[k, 2],
                                    pair_obs[k, 3], pair_obs[k, 4])
             t0, t1 = t[s0, j], t[s1, j]
+            # skip a pair whose circle, swept over the segment's time window, stays further
+            # than r + SLACK from the segment's box in x or in y: it cannot meet it
+            sx0, sx1, sy0, sy1 = ovx * t0, ovx * t1, ovy * t0, ovy * t1
+            reach = r + SLACK
+            if (ox + min(sx0, sx1) - reach > max(x[s0, j], x[s1, j])
+                    or ox + max(sx0, sx1) + reach < min(x[s0, j], x[s1, j])
+                    or oy + min(sy0, sy1) - reach > max(y[s0, j], y[s1, j])
+                    or oy + max(sy0, sy1) + reach < min(y[s0, j], y[s1, j])):
+                continue
             ex0 = x[s0, j] - (ox + ovx * t0)
             ey0 = y[s0, j] - (oy + ovy * t0)
             ex1 = x[s1, j] - (ox + ovx * t1)
@@ -129,14 +144,3 @@ def _eq12_batch(x: np.ndarray, y: np.ndarray, v: np.ndarray, t: np.ndarray,
 
 
 eq12_batch = njit(cache=True, nogil=True)(_eq12_batch) if AVAILABLE else None
-
-
-def warm() -> bool:
-    """Compile (or load from numba's cache) the kernel now, e.g. once per plan worker, so
-    that the first plan does not pay for it; False without numba."""
-    if eq12_batch is None:
-        return False
-    z2, z1 = np.zeros((3, 1)), np.zeros((2, 1))
-    eq12_batch(z2, z2, np.ones((3, 1)), z2, np.ones((2, 1)), z1, np.zeros(1, dtype=np.bool_),
-               np.zeros(0, np.int64), np.zeros((0, 5)), np.ones(7), np.ones(6))
-    return True

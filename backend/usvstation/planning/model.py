@@ -53,22 +53,28 @@ class Waypoint:
 @dataclass(frozen=True)
 class SmoothedPath:
     """B-spline samples of a plan (`degree` 3, or 2 when 3 came too close), whether they
-    keep clear of the inflated obstacles and the least water they leave the hull."""
+    keep clear of the inflated obstacles, the least water they leave the hull, and the
+    control points added to keep them clear (`repaired`, in the document when not 0)."""
 
     degree: int
     collision_free: bool
     min_clearance_m: float | None
     points: tuple[Waypoint, ...]
+    repaired: int = 0  # control points added to clear it (smoothing.repair); 0: none
 
     def to_document(self) -> dict[str, Any]:
-        return {"degree": self.degree, "collision_free": self.collision_free,
-                "min_clearance_m": self.min_clearance_m,
-                "points": [p.to_document() for p in self.points]}
+        doc = {"degree": self.degree, "collision_free": self.collision_free,
+               "min_clearance_m": self.min_clearance_m,
+               "points": [p.to_document() for p in self.points]}
+        if self.repaired:
+            doc["repaired"] = self.repaired
+        return doc
 
     @classmethod
     def from_document(cls, doc: Mapping[str, Any]) -> SmoothedPath:
         return cls(doc["degree"], doc["collision_free"], doc.get("min_clearance_m"),
-                   tuple(Waypoint.from_document(p) for p in doc["points"]))
+                   tuple(Waypoint.from_document(p) for p in doc["points"]),
+                   int(doc.get("repaired", 0)))
 
 
 class _Metric(Generic[T]):

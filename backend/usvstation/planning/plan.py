@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 from dataclasses import replace
 from typing import Any
 
@@ -21,6 +22,7 @@ from usvstation.planning.problem import Problem, sweep_moving
 from usvstation.planning.smoothing import smooth_path
 from usvstation.planning.start import Prefix, needs_prefix, prefixes, start_state
 from usvstation.planning.validate import current_vector, hull_clearance, plan_violations
+from usvstation.planning.warm import compiled, warm
 from usvstation.planning.xyt import ObstacleField
 from usvstation.scenario import Scenario, scenario_at
 from usvstation.scenario.options import IGAOptions
@@ -52,15 +54,13 @@ def plan_scenario(
     opts = scenario.planner_options(**overrides)
     check_memory(scenario, opts)
     budget = Budget(opts.evaluation_budget, opts.time_budget_s, clock, started)
+    budget.excluding(warm, when=compiled)  # kernels loaded once per process; compiling is
+    # not planning (planning/warm.py)
     first: tuple[Problem, IGAResult] | None = None
     reasons: list[str] = []
     direct = not needs_prefix(scenario, opts)
     for margin, warning in clearance_margins(scenario, opts.clearance_fallback):
-        starts: list[Prefix | None] = [None] if direct else []
-        starts += prefixes(scenario, opts, margin)
-        if not starts:  # no run-out needed after all (e.g. a hull already crabbing right)
-            starts = [None]
-        for prefix in starts:
+        for prefix in _starts(scenario, opts, margin, direct):
             state = start_state(scenario) if prefix is None else prefix.end
             problem = Problem.from_scenario(scenario, margin, state=state)
             try:
@@ -102,12 +102,26 @@ def plan_scenario(
     raise NoFeasiblePlan(f"{head}: {explain_infeasible(*first)}")
 
 
+def _starts(scenario: Scenario, opts: IGAOptions, margin: float,
+            direct: bool) -> Iterator[Prefix | None]:
+    """Where the IGA's leg begins, in the order tried: the start itself (None) when the boat
+    can leave it directly, then the run-outs (computed only once the direct plan failed);
+    the start itself also when no run-out is needed after all (a hull already crabbing
+    right)."""
+    if direct:
+        yield None
+    runouts = prefixes(scenario, opts, margin)
+    if not runouts and not direct:
+        yield None
+    yield from runouts
+
+
 def replan_from(
     scenario: Scenario, x: float, y: float, heading_deg: float, speed: float, t: float,
     planner: str = "iga", seed: int | None = None, **overrides: Any,
 ) -> Plan:
-    """Plan from a boat under way (ramp frame position, hull heading, speed through the water)
-    at `t` s after the scenario's t = 0: obstacles are propagated to that instant (eq. 8)
+    """Plan from a boat under way (ramp frame position, hull heading, speed over ground) at
+    `t` s after the scenario's t = 0: obstacles are propagated to that instant (eq. 8)
     and the plan's t = 0 is that instant."""
     at_now = scenario_at(scenario, x, y, heading_deg, speed, t)
     return plan_scenario(at_now, planner=planner, seed=seed, **overrides)
@@ -205,6 +219,13 @@ def build_plan(
         },
     }
     plan = Plan("iga", scenario.name, opts.seed, waypoints, metrics, sections=sections)
+    own = float(np.clip(scenario.start.speed, scenario.vessel.speed_min,
+                        scenario.vessel.speed_max))
+    if abs(float(v[0]) - own) > 1e-9:
+        plan = plan.warned(
+            f"start speed {scenario.start.speed:g} m/s over ground: the boat cannot keep it "
+            f"on its first leg in this current (through the water within [speed_min, "
+            f"speed_max]); planned from {float(v[0]):.3g} m/s")
     if opts.smoothing:
         smoothed = smooth_path(xs, ys, t, hull_field(scenario))
         if smoothed["collision_free"]:

@@ -44,6 +44,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from usvstation.geometry import angle_diff
+from usvstation.planning import kernel_preheat
 from usvstation.planning.encoding import GeneLayout
 from usvstation.planning.fitness import water_speed_bad
 from usvstation.planning.problem import Problem
@@ -113,12 +114,26 @@ class _Grower:
     """Grows batches of individuals for one layout (the context of Algorithm 1's loop)."""
 
     def __init__(self, layout: GeneLayout, problem: Problem, opts: IGAOptions,
-                 rng: np.random.Generator, report: PreheatReport) -> None:
+                 rng: np.random.Generator, report: PreheatReport,
+                 compiled: bool | None = None) -> None:
         self.layout, self.problem, self.opts, self.rng = layout, problem, opts, rng
         self.report = report
         if report.obstacle_hits is None:
             report.obstacle_hits = np.zeros(problem.obstacles.count, dtype=np.int64)
-        self.near = [self._near_block(k) for k in range(layout.n_mid + 1)]
+        self.compiled = kernel_preheat.AVAILABLE if compiled is None else compiled
+        if not self.compiled:
+            self.near = [self._near_block(k) for k in range(layout.n_mid + 1)]
+        else:
+            self.near_rows = self._near_rows()
+            cx, cy = problem.current
+            self.speed_limits = np.array([
+                2.0 * problem.accel_max, problem.speed_min**2, problem.speed_max**2, cx, cy,
+                layout.v_lo, layout.v_res, layout.v_count], dtype=np.float64)
+            self.water = np.array([cx, cy, cx * cx + cy * cy,
+                                   (problem.speed_min * (1 - 1e-6)) ** 2,
+                                   (problem.speed_max * (1 + 1e-6)) ** 2])
+            self.goal = np.asarray(layout.goal, dtype=np.float64)
+            self.no_aim = np.zeros(4 * 2 * opts.population)  # enough for any draw
         self.v2min, self.v2max = problem.speed_min**2, problem.speed_max**2
         last = layout.n_mid - 1
         self.run_in = float(layout.x_of(layout.x_count[last] // 2, last))
@@ -126,6 +141,19 @@ class _Grower:
         self.start_slope = np.nan
         if problem.start_course is not None:
             self.start_slope = angle_diff(math.pi, problem.start_course)
+
+    def _near_rows(self) -> list[tuple[np.ndarray, np.ndarray]]:
+        """`_near_block` of every block as the compiled draw takes it: the rows (cx, cy, vx,
+        vy, R_l) of the obstacles near block k and their indices, all blocks at once."""
+        lay, f = self.layout, self.problem.obstacles
+        blocks = np.arange(lay.n_mid)
+        tops = np.concatenate([[float(lay.start[0])], lay.x_of(lay.x_count, blocks)])
+        bottoms = np.concatenate([lay.x_of(0, blocks), [float(lay.goal[0])]])
+        reach = f.inflated + lay.x_res
+        near = ((f.centre[None, :, 0] + reach >= bottoms[:, None])
+                & (f.centre[None, :, 0] - reach <= tops[:, None])) | ~f.static[None, :]
+        table = np.column_stack([f.centre, f.velocity, f.inflated]).reshape(-1, 5)
+        return [(table[idx], idx) for idx in (np.flatnonzero(row) for row in near)]
 
     def _near_block(self, k: int) -> _Obstacles:
         """Obstacles that can touch a segment ending in block k (k = n_mid: the goal leg)."""
@@ -153,6 +181,7 @@ class _Grower:
         start = (lay.start[0], lay.start[1], 0.0, lay.start_speed, self.start_slope)
         walk = _Walk(np.vstack([np.repeat(np.array(start)[:, None], count, axis=1),
                                 join_x, self._aim_y(count)]), greedy)
+        draw = self._draw_compiled if self.compiled else self._draw
         for k in range(lay.n_mid):
             pending = np.flatnonzero(alive)
             for attempt in range(self.opts.preheat_retries):
@@ -161,7 +190,7 @@ class _Grower:
                 if expired is not None and expired():
                     alive[:] = False
                     return levels, alive
-                pending = pending[~self._draw(k, walk, pending, levels, wide=attempt > 0)]
+                pending = pending[~draw(k, walk, pending, levels, wide=attempt > 0)]
             if pending.size:
                 alive[pending] = False
                 self.report.blocked_at[k] = self.report.blocked_at.get(k, 0) + int(pending.size)
@@ -233,6 +262,44 @@ class _Grower:
         if last:
             levels[who, -1] = gvl[pick]
         return placed
+
+    def _draw_compiled(
+        self, k: int, walk: _Walk, idx: np.ndarray, levels: np.ndarray, wide: bool = False
+    ) -> np.ndarray:
+        """`_draw` in compiled calls (planning/kernel_preheat.py): the same random numbers,
+        drawn in the same order, and the same points placed, bit for bit."""
+        lay, prob, rng, kp = self.layout, self.problem, self.rng, kernel_preheat
+        n, c = idx.size, self.opts.candidates
+        last = k == lay.n_mid - 1
+        xl = rng.integers(0, lay.x_count[k], size=(n, c))
+        offset = rng.uniform(-1.0, 1.0, size=(n, c))
+        u_speed = rng.uniform(0.0, 4.0, size=(n, c))
+        u_goal = rng.uniform(0.0, 4.0, size=(n, c)) if last else u_speed
+        key_rand = rng.random((n, c))
+        state = walk.state
+        if wide:
+            aim = self.no_aim[:n]  # unused when wide
+        else:
+            gx, gy = float(lay.goal[0]), float(lay.goal[1])
+            aim = np.arctan2(*kp.aim_args(state, idx, lay.cone_tan is None or last, gx, gy,
+                                          self.run_in, lay.x_res))
+        free_first = k == 0 and math.isnan(self.start_slope)
+        taper = min(1.0, max(0.2, (lay.n_mid - 1 - k) / 3.0))
+        tan_s = np.tan(kp.slopes(state, idx, offset, aim, wide, free_first, prob.turn_max,
+                                 _MAX_SLOPE, taper * _SPREAD))
+        x, y, yl, dx, dy, gnum, gden = kp.place_y(
+            state, idx, xl, tan_s, lay.x_min, int(lay.x_base[k]), lay.x_res,
+            last and lay.cone_tan is not None, lay.cone_m, lay.y_res, lay.y_lo, lay.y_count,
+            float(lay.goal[0]), float(lay.goal[1]))
+        slope = np.arctan2(dy, dx)
+        goal_slope = np.arctan2(gnum, gden) if last else slope
+        obs, index = self.near_rows[k]
+        obs_goal, index_goal = self.near_rows[k + 1] if last else self.near_rows[k]
+        return kp.finish(
+            state, idx, walk.greedy, levels, k, last, xl, x, y, yl, dx, dy, slope, goal_slope,
+            offset, u_speed, u_goal, key_rand, not free_first, prob.turn_max, self.goal,
+            self.speed_limits, self.water, obs, index, obs_goal, index_goal,
+            self.report.obstacle_hits)
 
     def _aim_y(self, count: int) -> np.ndarray:
         """A fifth of the individuals aim wide, anywhere in the y range, until their join_x, so
@@ -369,15 +436,18 @@ def _near_box(obs: _Obstacles, px: Num, py: Num, pt: Num, x: Num, y: Num, t: Num
 def preheat(
     layout: GeneLayout, problem: Problem, opts: IGAOptions, rng: np.random.Generator,
     count: int, need: int | None = None, expired: Callable[[], bool] | None = None,
+    compiled: bool | None = None,
 ) -> tuple[np.ndarray, np.ndarray, PreheatReport]:
     """Grow `count` individuals; returns (levels (count, G), ok (count,), report).
 
     While fewer than `need` (default: all) are grown, the blocked ones are
-    restarted from the start, at most `preheat_restarts` times.
+    restarted from the start, at most `preheat_restarts` times. `compiled` (default:
+    where numba is available) draws in compiled calls; False runs the NumPy reference,
+    which grows the same individuals bit for bit.
     """
     need = count if need is None else need
     report = PreheatReport(requested=count)
-    grower = _Grower(layout, problem, opts, rng, report)
+    grower = _Grower(layout, problem, opts, rng, report, compiled)
     levels = np.zeros((count, layout.n_genes), dtype=np.int64)
     ok = np.zeros(count, dtype=bool)
     todo = np.arange(count)

@@ -27,7 +27,7 @@ class StartState:
     x: float
     y: float
     heading: float  # rad, hull heading, counter-clockwise from +x
-    speed: float  # m/s through the water
+    speed: float  # m/s over ground: the plan's first waypoint speed
     t: float = 0.0
     bound: bool = False  # True: the first leg must stay within turn_max of `heading`
     course: float | None = None  # rad, course over ground (default: the heading)

@@ -49,38 +49,74 @@ class Prefix:
 def start_state(scenario: Scenario) -> StartState:
     """The scenario's start; its heading binds the first leg when the boat moves.
 
-    The plan's start speed is a ground speed along the first leg (eq. 11). A boat
-    that a current sets back (its ground velocity has no component along its hull,
-    e.g. 0.5 m/s through the water against 1.5 m/s) is planned along its hull
-    heading, from the ground speed closest to its own that the leg's window of
-    speeds through the water admits (see `ground_window`).
+    `start.speed` is the boat's speed over ground (in the scenario's frame: with a moving
+    ramp, relative to the ramp) and the plan starts from it: the first waypoint's speed is
+    that speed and the first leg reaches the next within accel_max (eq. 12's G_acc). Its
+    course over ground follows from the hull heading, that speed and the current
+    (`start_motion`). Only a start whose speed over ground the boat cannot keep on that
+    course within [speed_min, speed_max] through the water (a boat the current sets back,
+    its ground velocity with no component along its hull: it is planned along its hull
+    heading) starts from the nearest speed the course admits, and the plan says so.
     """
     s, v = scenario.start, scenario.vessel
     h = math.radians(s.heading_deg)
     cx, cy = current_vector(scenario)
     moving = s.speed >= MOVING_START_SPEED
-    course = start_course(h, s.speed, cx, cy)
+    _, course = start_motion(scenario)
+    speed = float(np.clip(s.speed, v.speed_min, v.speed_max))
     if not moving and (cx, cy) == (0.0, 0.0):
-        return StartState(s.x, s.y, h, float(np.clip(s.speed, v.speed_min, v.speed_max)),
-                          bound=False, course=course)
-    gx, gy = s.speed * math.cos(h) + cx, s.speed * math.sin(h) + cy
-    along = gx * math.cos(course) + gy * math.sin(course)  # own ground speed on the course
-    lo, hi = ground_window(course, cx, cy, v.speed_min, v.speed_max)
-    speed = float(np.clip(along, lo, hi)) if lo <= hi else float(
-        np.clip(math.hypot(gx, gy), v.speed_min, v.speed_max))
+        return StartState(s.x, s.y, h, speed, bound=False, course=course)
+    lo, hi = ground_window(course, cx, cy, v.speed_min, v.speed_max, slack=0.0)
+    if lo <= hi:
+        speed = float(np.clip(speed, lo, hi))
     return StartState(s.x, s.y, h, speed, bound=moving, course=course)
 
 
+def start_motion(scenario: Scenario) -> tuple[float, float]:
+    """(speed through the water, course the first leg is bound around) of the scenario's
+    start, from its hull heading, its speed over ground and the current.
+
+    The speed through the water w solves |w u + c| = s (u the hull's unit vector, c the
+    current, s the speed over ground): of its roots w >= 0, the largest within [speed_min,
+    speed_max] (the boat making way along its hull), else the largest; without a root (a
+    cross current faster than s) the w nearest one. The course is the course over ground,
+    or the hull heading when the current sets the boat back (`start_course`).
+    """
+    s, v = scenario.start, scenario.vessel
+    h = math.radians(s.heading_deg)
+    cx, cy = current_vector(scenario)
+    water = water_speed_for(h, s.speed, cx, cy, v.speed_min, v.speed_max)
+    return water, start_course(h, water, cx, cy)
+
+
+def water_speed_for(heading: float, ground_speed: float, cx: float, cy: float,
+                    speed_min: float, speed_max: float) -> float:
+    """Speed through the water of a hull at `heading` making `ground_speed` over ground in
+    the current (c): the root w >= 0 of w^2 + 2 w u.c + |c|^2 - s^2 = 0 as `start_motion`
+    chooses it."""
+    if (cx, cy) == (0.0, 0.0):
+        return ground_speed
+    along = math.cos(heading) * cx + math.sin(heading) * cy
+    disc = along * along - (cx * cx + cy * cy) + ground_speed * ground_speed
+    if disc < 0.0:
+        return max(0.0, -along)
+    roots = [w for w in (-along + math.sqrt(disc), -along - math.sqrt(disc)) if w >= 0.0]
+    if not roots:
+        return 0.0
+    inside = [w for w in roots if speed_min <= w <= speed_max]
+    return max(inside or roots)
+
+
 def ground_window(course: float, cx: float, cy: float, speed_min: float,
-                  speed_max: float) -> tuple[float, float]:
+                  speed_max: float, slack: float = 0.01) -> tuple[float, float]:
     """Ground speeds along `course` within [speed_min, speed_max] whose speed through the
-    water (ground velocity minus current) lies in [speed_min, speed_max] too, with 1 %
-    slack at both ends in a current (lo > hi: none)."""
+    water (ground velocity minus current) lies in [speed_min, speed_max] too, with `slack`
+    (1 %) at both ends in a current (lo > hi: none)."""
     if (cx, cy) == (0.0, 0.0):
         return speed_min, speed_max
     ux, uy = math.cos(course), math.sin(course)
     along, across = ux * cx + uy * cy, ux * cy - uy * cx
-    lo_w, hi_w = 1.01 * speed_min, 0.99 * speed_max
+    lo_w, hi_w = (1.0 + slack) * speed_min, (1.0 - slack) * speed_max
     if across * across >= hi_w * hi_w:
         return 1.0, 0.0
     lo = along + math.sqrt(max(lo_w * lo_w - across * across, 0.0))
@@ -115,9 +151,7 @@ def needs_prefix(scenario: Scenario, opts: IGAOptions) -> bool:
         return True
     if s.speed < MOVING_START_SPEED:
         return False
-    h = math.radians(s.heading_deg)
-    cx, cy = current_vector(scenario)
-    course = start_course(h, s.speed, cx, cy)
+    _, course = start_motion(scenario)
     bearing = math.atan2(scenario.goal.y - s.y, scenario.goal.x - s.x)
     return abs(angle_diff(course, bearing)) > ALIGNED
 
@@ -148,13 +182,14 @@ def _steer(scenario: Scenario, opts: IGAOptions, side: float,
     s = scenario.start
     cx, cy = current_vector(scenario)
     drift = math.hypot(cx, cy)
-    water = float(np.clip(max(s.speed, 1.0), v.speed_min, v.speed_max))
+    start_water, start_k = start_motion(scenario)
+    water = float(np.clip(max(start_water, 1.0), v.speed_min, v.speed_max))
     if drift >= 0.8 * water:  # make way against the current in every direction
         water = max(water, min(0.95 * v.speed_max, drift / 0.8))
     step = 0.6 * math.radians(v.turn_max_deg)
     leg = scale * max(3.0, 2.0 * v.length, 2.0 * water, 4.0 * drift)
     moving = s.speed >= MOVING_START_SPEED
-    k = start_course(math.radians(s.heading_deg), s.speed, cx, cy) if moving else None
+    k = start_k if moving else None
     x, y = s.x, s.y
     recovery = scenario.kind == "recovery"
     x_out = x_needed(opts) + 0.5 * abs(s.y) if recovery and s.x < x_needed(opts) else None
@@ -196,12 +231,13 @@ def _steer(scenario: Scenario, opts: IGAOptions, side: float,
     if len(xs) == 1:
         return None
     waters = [first_water] + [water] * (len(courses) - 1)
-    speeds = _joint_speeds(courses, waters, cx, cy, v.speed_min, v.speed_max)
+    legs = [math.hypot(xs[i + 1] - xs[i], ys[i + 1] - ys[i]) for i in range(len(xs) - 1)]
+    speeds = _joint_speeds(courses, waters, cx, cy, v.speed_min, v.speed_max,
+                           start_state(scenario).speed, legs, v.accel_max)
     if speeds is None:
         return None
     t = [0.0]
-    for i in range(len(xs) - 1):
-        d = math.hypot(xs[i + 1] - xs[i], ys[i + 1] - ys[i])
+    for i, d in enumerate(legs):
         t.append(t[-1] + 2.0 * d / (speeds[i] + speeds[i + 1]))
     kk, g = courses[-1], speeds[-1]
     hull = math.atan2(g * math.sin(kk) - cy, g * math.cos(kk) - cx)
@@ -227,10 +263,13 @@ def _water_within(hull: float, water: float, cx: float, cy: float, speed_min: fl
 
 
 def _joint_speeds(courses: list[float], waters: list[float], cx: float, cy: float,
-                  speed_min: float, speed_max: float) -> list[float] | None:
-    """Ground speed at every prefix waypoint (eq. 11's v_i): the one that makes waters[i]
-    through the water on the leg it starts, moved into the window of both adjacent legs;
-    None where the two windows do not meet."""
+                  speed_min: float, speed_max: float, start: float, legs: list[float],
+                  accel_max: float) -> list[float] | None:
+    """Ground speed at every prefix waypoint (eq. 11's v_i): the start's own speed over
+    ground (moved into the first leg's window only where that window excludes it), then the
+    one that makes waters[i] through the water on the leg it starts, moved into the window
+    of both adjacent legs and within accel_max of the previous waypoint's speed over the leg
+    between them; None where these do not meet."""
     def wanted(i: int) -> float:
         k, water = courses[i], waters[i]
         along = math.cos(k) * cx + math.sin(k) * cy
@@ -238,10 +277,16 @@ def _joint_speeds(courses: list[float], waters: list[float], cx: float, cy: floa
         return along + math.sqrt(max(water * water - across * across, 0.0))
 
     windows = [ground_window(k, cx, cy, speed_min, speed_max) for k in courses]
-    out = []
-    for i in range(len(courses) + 1):
-        near = windows[max(i - 1, 0):i + 1]
+    lo, hi = ground_window(courses[0], cx, cy, speed_min, speed_max, slack=0.0)
+    if lo > hi:
+        return None
+    out = [float(np.clip(start, lo, hi))]
+    for i in range(1, len(courses) + 1):
+        near = windows[i - 1:i + 1]
         lo, hi = max(w[0] for w in near), min(w[1] for w in near)
+        reach = 2.0 * accel_max * legs[i - 1] * (1.0 - 1e-9)  # |v1^2 - v0^2| <= 2 a L
+        lo = max(lo, math.sqrt(max(out[-1] ** 2 - reach, 0.0)))
+        hi = min(hi, math.sqrt(out[-1] ** 2 + reach))
         if lo > hi:
             return None
         out.append(float(np.clip(wanted(min(i, len(courses) - 1)), lo, hi)))

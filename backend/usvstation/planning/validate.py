@@ -26,6 +26,7 @@ from typing import Any
 import numpy as np
 
 from usvstation.geometry import angle_diff
+from usvstation.planning import kernel_geom
 from usvstation.planning.hull import outline_clearance
 from usvstation.scenario import Scenario
 
@@ -175,10 +176,19 @@ def clearances(
         d = clearance_matrix(plan, scenario)
         cols = [j for j, o in enumerate(obs) if o.moving or not moving_only]
         return {(i, j): float(d[i, j]) for i in range(d.shape[0]) for j in cols}
+    cols = [j for j, o in enumerate(obs) if o.moving or not moving_only]
+    if kernel_geom.AVAILABLE:  # closest_distance of every pair in one compiled call
+        x, y, t = (np.array([w[k] for w in wps], dtype=float) for k in ("x", "y", "t"))
+        sel = [obs[j] for j in cols]
+        centre = np.array([[o.x, o.y] for o in sel], dtype=float).reshape(-1, 2)
+        velocity = np.array([[o.vx, o.vy] for o in sel], dtype=float).reshape(-1, 2)
+        margin = np.array([margin_s if o.moving else 0.0 for o in sel], dtype=float)
+        dist = kernel_geom.swept_clearances(x, y, t, centre, velocity, margin)
+        return {(i, j): float(dist[i, k]) - obs[j].radius - half_hull
+                for k, j in enumerate(cols) for i in range(dist.shape[0])}
     out: dict[tuple[int, int], float] = {}
-    for j, o in enumerate(obs):
-        if moving_only and not o.moving:
-            continue
+    for j in cols:
+        o = obs[j]
         m = margin_s if o.moving else 0.0
         for i, (a, b) in enumerate(itertools.pairwise(wps)):
             dist = closest_distance(a, b, o.x, o.y, o.vx, o.vy, m)
@@ -214,6 +224,13 @@ def hull_clearance(plan: dict[str, Any], scenario: Scenario) -> float | None:
     """Least water between hull and any obstacle circle over the plan, m (None: no obstacles)."""
     if not scenario.obstacles:
         return None
+    if kernel_geom.AVAILABLE:  # clearance_matrix's least entry in one compiled pass
+        wps, obs = plan["waypoints"], scenario.obstacles
+        x, y, t = (np.array([w[k] for w in wps], dtype=float) for k in ("x", "y", "t"))
+        centre = np.array([[o.x, o.y] for o in obs], dtype=float)
+        velocity = np.array([[o.vx, o.vy] for o in obs], dtype=float)
+        r = np.array([o.radius for o in obs]) + scenario.vessel.length / 2.0
+        return float(kernel_geom.hull_clearance(x, y, t, centre, velocity, r))
     return float(clearance_matrix(plan, scenario).min())
 
 

@@ -43,11 +43,17 @@ class Origin(BaseModel):
 
 
 class Start(BaseModel):
+    """Where the boat is when the plan starts: position, hull heading and speed over
+    ground (its course over ground follows from these and the current)."""
+
     model_config = _STRICT
     x: Metres
     y: Metres
-    heading_deg: float = Field(180.0, ge=-360.0, le=360.0)
-    speed: float = Field(1.0, ge=0.0, le=MAX_SPEED, description="m/s")
+    heading_deg: float = Field(180.0, ge=-360.0, le=360.0, description="hull heading, deg")
+    speed: float = Field(
+        1.0, ge=0.0, le=MAX_SPEED,
+        description="m/s over ground (in the scenario's frame: with a moving ramp, relative "
+                    "to the ramp); the plan's first waypoint speed")
 
 
 class Goal(BaseModel):
@@ -204,9 +210,10 @@ class Scenario(BaseModel):
 def scenario_at(
     scenario: Scenario, x: float, y: float, heading_deg: float, speed: float, t: float
 ) -> Scenario:
-    """The scenario seen from a boat at ramp-frame (x, y) with hull heading and speed, `t` s
-    after the scenario's t = 0: obstacles propagated to that instant (eq. 8), which becomes
-    the new t = 0. Raises ScenarioError (one line) if the result is not a valid scenario."""
+    """The scenario seen from a boat at ramp-frame (x, y) with hull heading and speed over
+    ground, `t` s after the scenario's t = 0: obstacles propagated to that instant (eq. 8),
+    which becomes the new t = 0. Raises ScenarioError (one line) if the result is not a
+    valid scenario."""
     data = scenario.model_dump()
     data["start"] = {"x": float(x), "y": float(y), "heading_deg": float(heading_deg) % 360.0,
                      "speed": float(speed)}

@@ -181,7 +181,9 @@ def worker_main(conn: Connection, parent_pid: int, memory_mb: int) -> None:
     die_with_parent(parent_pid)
     init_worker(memory_mb)
     import usvstation.planning.registry  # noqa: F401  (numpy/scipy once, before the first job)
+    from usvstation.planning.warm import warm
 
+    warm()  # the compiled kernels loaded once, before the first job (planning/warm.py)
     conn.send(("ready", os.getpid()))
     while True:
         try:
