@@ -539,7 +539,7 @@ def _cmd_bench(args: argparse.Namespace) -> int:
         from usvstation.bench.tracking import run_tracking_bench
 
         result = run_tracking_bench(progress=lambda msg: print(msg, file=sys.stderr, flush=True),
-                                    with_manoeuvres=args.manoeuvres)
+                                    with_manoeuvres=args.manoeuvres, quick=args.quick)
         print(json.dumps(result, indent=2))
         return EXIT_OK
     from usvstation.bench.planner import render_markdown, run_planner_bench
