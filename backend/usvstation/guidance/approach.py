@@ -308,8 +308,7 @@ class RampApproach:
             heading = wrap_angle(self.arrival + math.copysign(limit, off))
             water = self._speed_for(chi, heading, water)
         if prof.time_at(distance) <= self.final_s:
-            delta, water, e = self._final(distance, lateral, sog, course, prof.water_speed,
-                                          angle_diff(pose.psi - bias, self.arrival))
+            delta, water, e = self._final(distance, lateral, sog, course, prof.water_speed)
             heading = wrap_angle(self.arrival + delta)
             self.final = True
             # the gates judge the crossing predicted over the last second, not one noisy step
@@ -325,14 +324,11 @@ class RampApproach:
                                False, min(water, self.speed_max))
 
     def _final(self, distance: float, lateral: float, sog: float, course: float,
-               nominal: float, hull: float = 0.0) -> tuple[float, float, float]:
+               nominal: float) -> tuple[float, float, float]:
         """The final phase: the hull within `end_heading` of the axis, the crossing point
         predicted and put on the axis by choosing the crab and the speed through the water
         (re-solved every step, from where the boat will be `TURN_LAG` s on). Returns
-        (crab, water speed, predicted crossing offset left over, m): the larger of what the
-        solution with the drift estimate leaves and what the measured ground velocity
-        leaves with the hull (`hull`: its offset from the axis now, rad) turned anywhere
-        within `end_heading` of the axis."""
+        (crab, water speed, predicted crossing offset left over, m)."""
         cx, cy = self.drift.drift(self.arrival, nominal)
         ca = cx * math.cos(self.arrival) + cy * math.sin(self.arrival)
         cn = -cx * math.sin(self.arrival) + cy * math.cos(self.arrival)
@@ -342,14 +338,7 @@ class RampApproach:
         y, d = lateral + vn_m * lag, max(distance - va_m * lag, 0.5)
         k = -y / d  # the lateral / along speed ratio that crosses on the axis
         h = self.end_heading
-        # measured: where the boat crosses with its measured ground velocity, the hull
-        # turned anywhere within `h` of the axis from where it points now (trusts no drift
-        # estimate: a turn of the hull changes the lateral speed by u (sin h' - sin hull))
-        rest = d / max(va_m, MIN_HEADWAY)
-        ends = [y + (vn_m + sog * (math.sin(e) - math.sin(hull))) * rest for e in (-h, h)]
-        measured = 0.0 if ends[0] * ends[1] <= 0.0 else min(ends, key=abs)
-        crab, u, left = self._final_solve(y, d, k, h, ca, cn, nominal)
-        return crab, u, left if abs(left) >= abs(measured) else measured
+        return self._final_solve(y, d, k, h, ca, cn, nominal)
 
     def _final_solve(self, y: float, d: float, k: float, h: float, ca: float, cn: float,
                      nominal: float) -> tuple[float, float, float]:

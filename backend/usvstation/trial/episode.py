@@ -328,7 +328,8 @@ class Operator:
             return None
         # planned against the live world, as the console offers: the ships on AIS and the
         # scenario's obstacles where they are now, the ship's way as an apparent current
-        world = (await self.c.get("/api/world/scenario")).json()["scenario"]
+        world = with_final_straight((await self.c.get("/api/world/scenario")).json()[
+            "scenario"])
         r = await self.c.post("/api/plans", json={"planner": self.ep.planner, "seed": 1,
                                                   "scenario": world})
         job = await self._wait(f"/api/plans/{r.json()['id']}",
@@ -390,13 +391,20 @@ class Operator:
                 await self.c.post(f"/api/replans/{rec['id']}/confirm")
 
 
+def with_final_straight(scenario: dict[str, Any]) -> dict[str, Any]:
+    """A recovery scenario document planned with the planner's final straight along the ramp
+    axis (planner option `final_straight`, docs/planner.md): what the mate asks for."""
+    return {**scenario, "planner": {**(scenario.get("planner") or {}), "final_straight": True}}
+
+
 async def new_approach(client: Any, clock: SimClock, planner: str = "iga",
                        seed: int = 1) -> tuple[bool, str]:
     """The station's new approach for a boat that went around and keeps station at its
     standby point (protocol/README.md, GO_AROUND): a plan from where the boat is (its
     telemetry: ramp-frame position, heading, speed) against the live world
     (`GET /api/world/scenario`: the ships on AIS and the charted obstacles where they are
-    now, the ship's way as an apparent current), uploaded with `POST /api/missions`, which
+    now, the ship's way as an apparent current), with the planner's final straight along
+    the ramp axis, uploaded with `POST /api/missions`, which
     the boat takes as a hot swap at its standby point. (True, mission id) once the boat
     flies it; else (False, why)."""
 
@@ -412,7 +420,7 @@ async def new_approach(client: Any, clock: SimClock, planner: str = "iga",
     row = (await client.get("/api/boat")).json()["telemetry"]
     if not row or row.get("x") is None or row.get("ramp_heading_deg") is None:
         return False, "new approach: no ramp-frame telemetry"
-    world = (await client.get("/api/world/scenario")).json()["scenario"]
+    world = with_final_straight((await client.get("/api/world/scenario")).json()["scenario"])
     world["start"] = {"x": row["x"], "y": row["y"], "speed": row["speed"],
                       "heading_deg": row["ramp_heading_deg"] % 360.0}
     r = await client.post("/api/plans", json={"planner": planner, "seed": seed,
