@@ -519,7 +519,7 @@ def test_the_new_approach_is_a_hot_swap_the_c_boat_takes_at_its_standby_item_onl
                              and m.active_id == 33, 20, since)
         assert swapped.state == RUNNING and swapped.uptime_ms >= swap_at
         assert c.wait_for(lambda m: m.get_type() == "STATUSTEXT" and m.text.startswith(
-            "swapped to mission 33") and m.text.endswith("new approach"), 10, since)
+            "new approach: mission 33 at "), 10, since)
 
 
 def test_a_hot_swap_on_the_final_leg_inside_the_first_gate_is_dropped(exe, d, key_path):

@@ -268,6 +268,6 @@ def test_the_new_approach_is_a_hot_swap_taken_at_the_standby_point_only():
     h.station.start_upload(new, h.t, swap_at_ms=h.boat.uptime_ms + 3000)
     assert h.run(30.0, dt=0.05, until=lambda: h.station.report.active_id == 24)
     assert h.station.report.state == "RUNNING"
-    assert any(e.text.endswith("ms: new approach") for e in h.of(StatusTextReceived))
+    assert any(e.text.startswith("new approach: mission 24 at") for e in h.of(StatusTextReceived))
     assert h.run(120.0, dt=0.05, until=lambda: h.station.report.state == "DONE")
     assert abs(v.truth.y) <= 0.3 and v.go_arounds == 1

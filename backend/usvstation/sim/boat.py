@@ -770,8 +770,9 @@ class BoatProtocol:
             self.vehicle.start()
             self.active, self.state = new, S_RUNNING
             self.activations.append((self.boat_time, new.mission_id))
-            self._text(mav.MAV_SEVERITY_INFO, f"swapped to mission {new.mission_id} at "
-                       f"{self.uptime_ms} ms" + (": new approach" if approach else ""), now)
+            self._text(mav.MAV_SEVERITY_INFO, ("new approach: mission" if approach else
+                                               "swapped to mission") +
+                       f" {new.mission_id} at {self.uptime_ms} ms", now)
         self._swap_mission = None
         self._report(now)
 

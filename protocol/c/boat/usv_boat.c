@@ -1721,11 +1721,11 @@ static void swap_if_due(usv_boat_t *b, uint32_t now)
             b->gate_next = b->gate_leg = 0;
             b->go_around = b->at_standby = 0;
             b->state = USV_BOAT_STATE_RUNNING;
-            text_begin(&t, "swapped to mission ");
+            text_begin(&t, approach ? "new approach: mission " : "swapped to mission ");
             tx_uint(&t, active_mission(b)->id);
             tx_str(&t, " at ");
             tx_uint(&t, at);
-            tx_str(&t, approach ? " ms: new approach" : " ms");
+            tx_str(&t, " ms");
             send_text(b, MAV_SEVERITY_INFO, &t);
         } else {
             text_begin(&t, "swap to ");
