@@ -169,6 +169,9 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("--families", help="compare: comma-separated families (default all: "
                        "recovery, transit, dense, colregs, traps); arrival: perturbation "
                        "families (default all)")
+    bench.add_argument("--plan-seeds", metavar="SEEDS",
+                       help="arrival: comma-separated plan seeds (default 21,22,23,24, on "
+                       "which nothing was tuned)")
     bench.add_argument("--workers", type=int, default=1,
                        help="arrival: processes running the episodes (default 1; the figures "
                        "do not depend on it)")
@@ -539,7 +542,7 @@ def _cmd_bench(args: argparse.Namespace) -> int:
         from usvstation.bench.tracking import run_tracking_bench
 
         result = run_tracking_bench(progress=lambda msg: print(msg, file=sys.stderr, flush=True),
-                                    with_manoeuvres=args.manoeuvres)
+                                    with_manoeuvres=args.manoeuvres, quick=args.quick)
         print(json.dumps(result, indent=2))
         return EXIT_OK
     from usvstation.bench.planner import render_markdown, run_planner_bench
@@ -565,9 +568,17 @@ def _cmd_bench_arrival(args: argparse.Namespace) -> int:
     if args.workers < 1:
         raise CliError(f"--workers: must be at least 1 (got {args.workers})", EXIT_INVALID)
     families = tuple(f.strip() for f in args.families.split(",")) if args.families else None
+    seeds: dict[str, Any] = {}
+    if args.plan_seeds:
+        try:
+            seeds["seeds"] = tuple(int(s) for s in args.plan_seeds.split(","))
+        except ValueError:
+            raise CliError(f"--plan-seeds: comma-separated integers (got {args.plan_seeds!r})",
+                           EXIT_INVALID) from None
     try:
         result = run_arrival_bench(families=families, quick=args.quick, workers=args.workers,
-                                   progress=lambda msg: print(msg, file=sys.stderr, flush=True))
+                                   progress=lambda msg: print(msg, file=sys.stderr, flush=True),
+                                   **seeds)
     except ValueError as exc:
         raise CliError(str(exc), EXIT_INVALID) from None
     print(json.dumps(result, indent=2))

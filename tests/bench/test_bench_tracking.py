@@ -69,10 +69,13 @@ def test_bench_parser_offers_tracking() -> None:
 
 
 def test_bench_tracking_prints_one_json_object_meeting_the_issue(capsys) -> None:
-    assert main(["bench", "tracking", "--json"]) == 0
+    """`--quick`: every part of the full bench on the same code paths, with fewer
+    repetitions and cases (the full run, 500 paper runs, is what RESULTS.md reports)."""
+    assert main(["bench", "tracking", "--json", "--quick"]) == 0
     result = json.loads(capsys.readouterr().out)
+    assert result["quick"] is True
     paper = result["paper_reproduction"]
-    assert paper["runs"] == 500 and paper["distinct_runs"]["avlos_eq13"] == 500
+    assert paper["runs"] == 50 and paper["distinct_runs"]["avlos_eq13"] == 50
     assert 1.5 <= paper["los_mean_dev_m"] <= 2.6
     assert paper["avlos_eq13_mean_dev_m"] <= 0.8161
     assert {r["choice"] for r in paper["sensitivity"]} >= {"accel_max", "start_square_m",
@@ -96,13 +99,19 @@ def test_bench_tracking_prints_one_json_object_meeting_the_issue(capsys) -> None
     assert result["disturbed_conditions"]["current_speed_mps"] == 0.3
     assert result["disturbed_conditions"]["sea_state"] == 3
     assert math.isfinite(result["elapsed_s"]["disturbed"])
-    assert len(result["disturbed_quartering_seas"]) == 4 * len(METHODS)
+    assert {(r["scenario"], r["method"]) for r in result["disturbed_quartering_seas"]} == {
+        (s, m) for s in scenarios for m in ("los", "avlos_comp")}
     assert len(result["disturbed_noisy_sensors"]["rows"]) == 4
+    untuned = result["disturbed_untuned_plan_seeds"]
+    assert untuned["plan_seeds"] == [4] and untuned["runs"] == 4
     keeping = {r["current_mps"]: r for r in result["station_keeping"]}
     for current in (0.5, 1.0):
         assert keeping[current]["radius_m"] <= 2.0 and keeping[current]["hold_s"] >= 180.0
         assert not keeping[current]["over_capacity_reported"]
     assert keeping[3.5]["over_capacity_reported"]
+    turning, strong = result["station_keeping_changes"]  # issue 24's HOLD cases
+    assert (turning["current_mps"], turning["turn_deg"]) == (1.0, 90.0) and turning["held"]
+    assert strong["current_mps"] == 2.4 and strong["over_capacity_after_s"] <= 10.0
     assert all(r["finished"] for r in result["hairpins"])
     ctl = {(r["paper"], r["controller"]) for r in result["controllers"]["rows"]}
     assert {("002", "pid"), ("002", "pid_mrac"), ("004", "drnn_pi"), ("004", "pi")} <= ctl

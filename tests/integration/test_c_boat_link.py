@@ -41,7 +41,7 @@ pytestmark = pytest.mark.skipif(c_compiler() is None,
                                 reason="no C compiler (cc/gcc) to build protocol/c/boat")
 
 ACCEPTED, DENIED, UNSUPPORTED = 0, 2, 3
-M_ACCEPTED, M_BAD_COUNT, M_UNKNOWN, M_OUT_OF_RANGE, M_EXPIRED = 0, 2, 3, 5, 9
+M_ACCEPTED, M_BAD_COUNT, M_UNKNOWN, M_OUT_OF_RANGE, M_DENIED, M_EXPIRED = 0, 2, 3, 5, 8, 9
 REASON_MISMATCH, REASON_TOO_FAR = 2, 4
 
 
@@ -491,3 +491,48 @@ def test_a_missed_gate_goes_around_to_standby_and_resume_approaches_again(exe, d
         st = c.wait_state(RUNNING, 10)
         assert st.current_seq == 1  # the approach again from the standby item, 60 m back
         assert c.wait_state(GO_AROUND, 60).active_id == 8  # and again no RTK: around
+
+
+def test_the_new_approach_is_a_hot_swap_the_c_boat_takes_at_its_standby_item_only(
+        exe, d, key_path):
+    """GO_AROUND: a swap whose END comes before the boat stands by is refused; at the
+    standby item the station's new approach (a mission from there) is swapped in: RUNNING
+    with it."""
+    items = line_north(3, step_m=60, leg_s=30)  # a 60 m final leg: every gate on it
+    standby = items[1]  # the first item at least 50 m back from the last
+    with boat_and_station(exe, d, key_path, speedup=3,
+                          extra=("--sensors", "gnss", "--seed", "2")) as (_, c), heartbeats(c):
+        start = c.mark()
+        upload_and_start(c, 31, items)
+        c.wait_state(GO_AROUND, 60)
+        early = line_north(2, step_m=60, leg_s=30, lat=standby.lat * 1e-7)
+        ack = c.upload(32, early, swap_at_ms=boat_uptime_now(c) + 20000)
+        assert ack.result == M_DENIED  # at END
+        assert c.wait_for(lambda m: m.get_type() == "STATUSTEXT" and m.text ==
+                          "swap of 32 refused: go-around not at standby yet", 10, start)
+        c.wait_for(lambda m: m.get_type() == "STATUSTEXT"
+                   and m.text == "go-around: at standby, RESUME to approach", 60, start)
+        since = c.mark()
+        swap_at = boat_uptime_now(c) + 3000
+        assert c.upload(33, early, swap_at_ms=swap_at).result == M_ACCEPTED
+        swapped = c.wait_for(lambda m: m.get_type() == "USV_MISSION_STATE"
+                             and m.active_id == 33, 20, since)
+        assert swapped.state == RUNNING and swapped.uptime_ms >= swap_at
+        assert c.wait_for(lambda m: m.get_type() == "STATUSTEXT" and m.text.startswith(
+            "new approach: mission 33 at "), 10, since)
+
+
+def test_a_hot_swap_on_the_final_leg_inside_the_first_gate_is_dropped(exe, d, key_path):
+    """Committed to the final approach: the gates decide, a swap is not taken there."""
+    items = line_north(3, step_m=60, leg_s=30)
+    with boat_and_station(exe, d, key_path, speedup=5) as (_, c), heartbeats(c):
+        upload_and_start(c, 41, items)
+        c.wait_for(lambda m: m.get_type() == "USV_MISSION_STATE" and m.current_seq >= 1
+                   and m.uptime_ms >= 46000, 60)  # past 90 m of 120: inside the 30 m gate
+        since = c.mark()
+        ack = c.upload(42, line_north(2, step_m=20, leg_s=10),
+                       swap_at_ms=boat_uptime_now(c) + 3000)
+        assert ack.result == M_DENIED
+        assert c.wait_for(lambda m: m.get_type() == "STATUSTEXT" and m.text ==
+                          "swap of 42 refused: on the final approach", 10, since)
+        assert c.state().active_id == 41

@@ -17,6 +17,7 @@ from usvstation.clock import SimClock, run_simulated
 from usvstation.config import Settings
 from usvstation.scenario import Scenario
 from usvstation.station import Station
+from usvstation.trial.episode import new_approach
 
 TOKEN = "sim-token-0123456789abcdef"
 T = TypeVar("T")
@@ -28,6 +29,7 @@ class SimStation:
     def __init__(self, station: Station, client: httpx.AsyncClient, clock: SimClock) -> None:
         self.station, self.client, self.clock = station, client, clock
         self.events: list[dict[str, Any]] = []  # what /ws/live would push: {type, data}
+        self.new_approaches: list[str] = []  # missions (or why not) given at standby: `sail`
         station.hub.observers.append(
             lambda kind, data: self.events.append({"type": kind, "data": data}))
 
@@ -69,19 +71,29 @@ class SimStation:
         return await self.poll(up, timeout, "the boat link")
 
     async def sail(self, mission_id: str, timeout: float) -> dict:
-        """Until the mission ends (completed, aborted, gone...): as the mate does, a boat that
-        went around and waits at its standby point is sent on a new approach (RESUME)."""
-        answered = 0
+        """Until the mission flown ends (completed, aborted, gone...): as the mate does, a
+        boat that went around and waits at its standby point is given the station's new
+        approach (a plan from there against the live world, hot-swapped in:
+        trial/episode.py `new_approach`), which is then the mission followed; the boat's
+        own (RESUME) only when the station has none. `new_approaches` lists them."""
+        seen: set[tuple[str, str]] = set()
+        flying = mission_id
 
         async def ended() -> dict | None:
-            nonlocal answered
+            nonlocal flying
             boat = await self.get("/api/boat")
-            standby = sum(1 for s in boat["status"] if "at standby" in s["text"])
-            if boat["boat"] and boat["boat"]["state"] == "GO_AROUND" and standby > answered:
-                answered = standby
-                r = await self.client.post("/api/boat/command", json={"command": "resume"})
-                assert r.status_code == 200, r.text
-            m = await self.get(f"/api/missions/{mission_id}")
+            standby = {(s["time"], s["text"]) for s in boat["status"]
+                       if "at standby" in s["text"]}
+            if boat["boat"] and boat["boat"]["state"] == "GO_AROUND" and standby - seen:
+                seen.update(standby)
+                ok, new = await new_approach(self.client, self.clock)
+                self.new_approaches.append(new)
+                if ok:
+                    flying = new
+                else:
+                    r = await self.client.post("/api/boat/command", json={"command": "resume"})
+                    assert r.status_code == 200, r.text
+            m = await self.get(f"/api/missions/{flying}")
             return m if m["state"] not in ("uploading", "verified", "active") else None
 
         return await self.poll(ended, timeout, f"mission {mission_id} to end", every=0.5)

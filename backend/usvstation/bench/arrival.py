@@ -18,7 +18,9 @@ Rows: {family, method, sensor, episodes, arrived, go_around, bad, p95_offset_m,
 p95_heading_deg} (offsets and heading errors over the crossings, true values). Methods:
 `approach` (compensated AV-LOS to the approach, then the ramp approach with gates and
 go-around), `approach_ilos` (ILOS to the approach, then the same), `legacy` (compensated
-AV-LOS with its once-bent final approach and no gates: the boat before issue 24).
+AV-LOS with its once-bent final approach and no gates: the boat before issue 24),
+`approach_straight` (as `approach`, on plans made with the planner's `final_straight`:
+the last leg along the ramp axis from the first gate in; the planning extension, apart).
 Plans of seeds 21-24 (`PLAN_SEEDS`) are reported; nothing was tuned on them (tuning used
 seeds 1-8, `TUNING_SEEDS`).
 """
@@ -45,7 +47,7 @@ PLAN_SEEDS = (21, 22, 23, 24)
 TUNING_SEEDS = tuple(range(1, 9))
 SCENARIOS = ("case1", "case2", "case3", "case4")
 SENSORS = ("rtk-moving-base", "rtk", "gnss")
-METHODS = ("approach", "approach_ilos", "legacy")
+METHODS = ("approach", "approach_ilos", "legacy", "approach_straight")
 STEP_S = 0.2  # s of boat time per vehicle step
 AFTER_S = 20.0  # s a go-around is followed for
 TIMEOUT_S = 60.0  # s after the plan's end without a crossing or a go-around
@@ -215,9 +217,10 @@ def _offsets(state: Any, goal: tuple[float, float], arrival: float) -> tuple[flo
     return offset, abs(math.degrees(angle_diff(state.heading, arrival)))
 
 
-def plans(seeds: tuple[int, ...] = PLAN_SEEDS,
-          scenarios: tuple[str, ...] = SCENARIOS) -> list[tuple[str, int, Any, dict[str, Any]]]:
-    """(scenario name, seed, scenario, plan document) for every plan flown."""
+def plans(seeds: tuple[int, ...] = PLAN_SEEDS, scenarios: tuple[str, ...] = SCENARIOS,
+          final_straight: bool = False) -> list[tuple[str, int, Any, dict[str, Any]]]:
+    """(scenario name, seed, scenario, plan document) for every plan flown (`final_straight`:
+    planned with the planner's final straight along the ramp axis, docs/planner.md)."""
     from usvstation.bench.tracking import scenario_for_vessel
     from usvstation.planning.plan import plan_scenario
     from usvstation.scenario import load_scenario
@@ -226,7 +229,8 @@ def plans(seeds: tuple[int, ...] = PLAN_SEEDS,
     for name in scenarios:
         scenario = scenario_for_vessel(load_scenario(name), otter())
         for seed in seeds:
-            out.append((name, seed, scenario, plan_scenario(scenario, seed=seed).to_document()))
+            out.append((name, seed, scenario, plan_scenario(
+                scenario, seed=seed, final_straight=final_straight).to_document()))
     return out
 
 
@@ -277,7 +281,8 @@ def run_family(family: Family, method: str, sensor: str,
 
 def _task(args: tuple[str, str, str, tuple[int, ...], tuple[str, ...]]) -> list[Outcome]:
     family, method, sensor, seeds, scenarios = args
-    return run_family(FAMILIES[family], method, sensor, plans(seeds, scenarios))[1]
+    return run_family(FAMILIES[family], method, sensor,
+                      plans(seeds, scenarios, final_straight=method == "approach_straight"))[1]
 
 
 QUICK = {"families": ("bench", "beam_2.5"), "methods": ("approach", "legacy"),
@@ -329,7 +334,10 @@ def run_arrival_bench(families: tuple[str, ...] | None = None,
         "methods": {"approach": "compensated AV-LOS, then the ramp approach (gates, go-around)",
                     "approach_ilos": "ILOS, then the ramp approach (gates, go-around)",
                     "legacy": "compensated AV-LOS with its once-bent final approach, no gates "
-                              "(the boat before issue 24)"},
+                              "(the boat before issue 24)",
+                    "approach_straight": "as approach, on plans with the planner's final "
+                                         "straight along the ramp axis from the first gate in "
+                                         "(planner option final_straight)"},
         "sensors": {n: _describe(n) for n in sensors},
         "conditions": {
             "plans": [f"{name} seed {seed}" for name in scenarios for seed in seeds],

@@ -786,29 +786,53 @@ def manoeuvres() -> dict[str, Any]:
     }
 
 
+QUICK = {  # `bench tracking --quick`: every part on the same code paths, fewer runs
+    "paper_repetitions": 1, "sensitivity_starts": 10,
+    "quartering_methods": ("los", "avlos_comp"), "untuned_seeds": (4,),
+    "station_keeping_currents": (0.5, 1.0, 3.5),
+    "station_keeping_changes": (STATION_CHANGES[0], STATION_CHANGES[6]),
+    "hairpin_methods": ("los", "ilos", "avlos_comp"),
+}
+
+
 def run_tracking_bench(progress: Callable[[str], None] | None = None,
-                       with_manoeuvres: bool = False) -> dict[str, Any]:
-    """Everything `usv-station bench tracking` prints."""
+                       with_manoeuvres: bool = False, quick: bool = False) -> dict[str, Any]:
+    """Everything `usv-station bench tracking` prints (`quick`: the same parts with fewer
+    repetitions, starts, methods and cases, `QUICK`: a smoke test, not figures for the
+    record)."""
     watch = Stopwatch()
     t0 = 0.0
     if progress:
         progress("paper 000 sec. 4.2 reproduction (kinematic boat)")
-    paper = paper_reproduction()
+    if quick:
+        paper = paper_reproduction(PaperSetup(repetitions=QUICK["paper_repetitions"]),
+                                   sensitivity=False)
+        paper["sensitivity"] = paper_sensitivity(PaperSetup(
+            starts=QUICK["sensitivity_starts"]))
+    else:
+        paper = paper_reproduction()
     t1 = watch.elapsed()
     setup = DisturbedSetup()
     rows = disturbed(setup, progress=progress)
     quartering = DisturbedSetup(wave_dir=QUARTERING_WAVE_DIR)
-    rows_quartering = disturbed(quartering, progress=progress)
-    untuned = untuned_arrivals(progress=progress)
+    rows_quartering = disturbed(quartering, progress=progress, methods=QUICK[
+        "quartering_methods"] if quick else METHODS)
+    untuned = untuned_arrivals(QUICK["untuned_seeds"] if quick else (4, 5, 6),
+                               progress=progress)
     noisy = disturbed(setup, methods=("avlos_comp",), progress=progress, sensor_seed=7)
     t2 = watch.elapsed()
     if progress:
         progress("station keeping")
-    keeping = station_keeping()
-    keeping_changes = station_keeping_changes()
+    if quick:
+        keeping = station_keeping(QUICK["station_keeping_currents"])
+        keeping_changes = [hold_through_change(*case)
+                           for case in QUICK["station_keeping_changes"]]
+    else:
+        keeping = station_keeping()
+        keeping_changes = station_keeping_changes()
     if progress:
         progress("hairpins")
-    pins = hairpins()
+    pins = hairpins(QUICK["hairpin_methods"]) if quick else hairpins()
     t3 = watch.elapsed()
     ctl = controllers(progress)
     t4 = watch.elapsed()
@@ -856,6 +880,7 @@ def run_tracking_bench(progress: Callable[[str], None] | None = None,
                       "station_keeping_and_hairpins": round(t3 - t2, 3),
                       "controllers": round(t4 - t3, 3)},
         "machine": {"python": platform.python_version(), "platform": platform.platform()},
+        "quick": quick,
     }
     if with_manoeuvres:
         if progress:

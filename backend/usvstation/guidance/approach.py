@@ -33,10 +33,11 @@ not dead-reckoned), a feasible line (enough headway against the drift, a line an
 hull can follow), cross-track error from the line, heading against what can still be
 corrected, speed. A missed gate is a go-around.
 
-Go-around (`escape_routes`): the standby point lies on the approach axis `standby_m`
-out from the ramp end; the escape route goes there straight from where the boat is, or
-back along the plan's own path; the caller checks each candidate against the obstacles
-and flies the first clear one.
+Go-around (`escape_routes`): the escape route goes back along the plan's own path (legs
+the planner checked against every obstacle the station knew) to where it lies `standby_m`
+out from the ramp end, the standby point (for a plan with a long final straight: on the
+axis); or, when that is not clear, straight to the standby point on the axis. The caller
+checks each candidate against the obstacles it knows and flies the first clear one.
 """
 
 from __future__ import annotations
@@ -104,6 +105,7 @@ JOIN_MARGIN = 10.0  # m: a gate is checked only this far inside where the approa
 MAX_LINE_ANGLE = math.radians(50.0)  # a steeper track cannot be flown onto the ramp
 PROFILE_STEP = 0.5  # m between the approach profile's samples
 TURN_LAG = 2.0  # s the hull's heading lags its command (autopilot reference model)
+FINAL_WINDOW = 5  # guidance steps (1 s) the final phase's predicted crossing is averaged
 
 
 @dataclass(frozen=True)
@@ -219,6 +221,7 @@ class RampApproach:
         self.line_override = line_override  # a fixed track angle (the plan's axis), or None
         self.y_int = 0.0
         self.final = False  # in the final phase (the hull held along the axis)
+        self._recent: list[float] = []  # the final phase's predicted crossing offsets
         self._last_t: float | None = None
         self.state: ApproachState | None = None
 
@@ -239,6 +242,10 @@ class RampApproach:
         to_go = max(distance, 0.0) / max(along, 0.5)
         return min(self.end_heading + self.turn_rate * max(to_go - self.final_s, 0.0),
                    self.heading_max)
+
+    def restart(self) -> None:
+        """Fly on from rest (after a HOLD): the integral and the final phase start anew."""
+        self.y_int, self.final, self._last_t, self._recent = 0.0, False, None, []
 
     def profile(self) -> ApproachProfile:
         """The approach path for the drift known now (sampled out to `reach` m)."""
@@ -304,6 +311,9 @@ class RampApproach:
             delta, water, e = self._final(distance, lateral, sog, course, prof.water_speed)
             heading = wrap_angle(self.arrival + delta)
             self.final = True
+            # the gates judge the crossing predicted over the last second, not one noisy step
+            self._recent = [*self._recent[-(FINAL_WINDOW - 1):], e]
+            e = sum(self._recent) / len(self._recent)
         reach = self.heading_limit(distance + TURN_LAG * along_now, along_now)
         self.state = ApproachState(distance, lateral, e, line, prof.feasible,
                                    angle_diff(pose.psi - bias, self.arrival), limit, reach,
@@ -328,6 +338,12 @@ class RampApproach:
         y, d = lateral + vn_m * lag, max(distance - va_m * lag, 0.5)
         k = -y / d  # the lateral / along speed ratio that crosses on the axis
         h = self.end_heading
+        return self._final_solve(y, d, k, h, ca, cn, nominal)
+
+    def _final_solve(self, y: float, d: float, k: float, h: float, ca: float, cn: float,
+                     nominal: float) -> tuple[float, float, float]:
+        """The crab and water speed that put the predicted crossing on the axis with the
+        drift estimate, and the offset left over."""
         crab0 = min(max(-math.asin(min(max(cn / max(nominal, 1e-6), -1.0), 1.0)),
                         -(h - self.margin)), h - self.margin)
 
@@ -392,6 +408,16 @@ class ApproachGates:
     def reset(self) -> None:
         self.passed, self.skipped, self._next = [], [], 0
 
+    def rejoin(self, distance: float, margin: float = JOIN_MARGIN) -> None:
+        """The approach is joined anew `distance` m out (after a HOLD): the gates still
+        ahead are checked again as the boat crosses them (those less than `margin` m
+        inside skipped, as at a first join); the caller goes around when none is ahead."""
+        gates = self.limits.gates
+        self.passed = [g for g in self.passed if g >= distance]
+        self.skipped = [g for g in self.skipped if g >= distance]
+        self._next = next((i for i, g in enumerate(gates) if g < distance), len(gates))
+        self.joined(distance, margin)
+
     def joined(self, distance: float, margin: float = JOIN_MARGIN) -> None:
         """The approach begins `distance` m out: gates less than `margin` m inside it
         cannot be met yet (the plan joins the axis late) and are skipped."""
@@ -450,21 +476,64 @@ def standby_point(goal: tuple[float, float], arrival: float,
             goal[1] - limits.standby * math.sin(arrival))
 
 
+@dataclass(frozen=True)
+class EscapeRoute:
+    """A go-around route: `points` from the boat to the standby point (the last one);
+    `on_plan` = (segment, fraction) where that point lies on the plan's path (the new
+    approach flies the plan on from there), None when it is off the plan."""
+
+    points: list[tuple[float, float]]
+    on_plan: tuple[int, float] | None = None
+
+    @property
+    def standby(self) -> tuple[float, float]:
+        return self.points[-1]
+
+
 def escape_routes(position: tuple[float, float], standby: tuple[float, float],
                   plan: Sequence[tuple[float, float]], goal: tuple[float, float],
-                  limits: ArrivalLimits) -> list[list[tuple[float, float]]]:
-    """Candidate go-around routes from `position`, best first: straight to the standby
-    point; back along the plan's path (`plan`, its waypoints from the start) to its first
-    point at least `limits.standby` m from the ramp end, which is then the standby point."""
-    routes = [[position, standby]]
-    back = [position]
-    for x, y in reversed(list(plan)[:-1]):
-        back.append((x, y))
-        if math.hypot(x - goal[0], y - goal[1]) >= limits.standby:
-            break
-    if len(back) > 1:
-        routes.append(back)
+                  limits: ArrivalLimits) -> list[EscapeRoute]:
+    """Candidate go-around routes from `position`, best first: back along the plan's path
+    (`plan`, its waypoints from the start: legs the planner checked against every obstacle
+    the station knew) from the leg nearest the boat to where the path first lies
+    `limits.standby` m from the ramp end (or to its start), which is then the standby
+    point; else straight to the standby point on the axis (`standby`)."""
+    routes = []
+    pts = np.asarray(plan, dtype=float)
+    if len(pts) >= 2:
+        here = np.asarray(position, dtype=float)
+        a, b = pts[:-1], pts[1:]
+        ab = b - a
+        w = np.clip(np.einsum("ij,ij->i", here - a, ab) / np.maximum(
+            np.einsum("ij,ij->i", ab, ab), 1e-12), 0.0, 1.0)
+        k = int(np.argmin(np.hypot(*(a + w[:, None] * ab - here).T)))
+        back, on_plan = [position], (0, 0.0)
+        g = np.asarray(goal, dtype=float)
+        for i in range(k, -1, -1):  # leg i from pts[i] to pts[i + 1], walked backwards
+            end = float(np.hypot(*(pts[i] - g)))
+            if end >= limits.standby:
+                start = a[i] + (w[k] if i == k else 1.0) * ab[i]
+                f = _crossing(start, pts[i], g, limits.standby)
+                p = start + f * (pts[i] - start)
+                back.append((float(p[0]), float(p[1])))
+                frac = (w[k] if i == k else 1.0) * (1.0 - f)
+                on_plan = (i, float(frac))
+                break
+            back.append((float(pts[i][0]), float(pts[i][1])))
+        routes.append(EscapeRoute(back, on_plan))
+    routes.append(EscapeRoute([position, standby]))
     return routes
+
+
+def _crossing(p: np.ndarray, q: np.ndarray, g: np.ndarray, radius: float) -> float:
+    """The fraction along p -> q where the distance from g first reaches `radius` (q lies
+    at or beyond it)."""
+    d = q - p
+    m = p - g
+    qa, qb, qc = float(d @ d), 2.0 * float(m @ d), float(m @ m) - radius * radius
+    if qc >= 0.0 or qa < 1e-12:
+        return 0.0
+    return min(max((-qb + math.sqrt(max(qb * qb - 4 * qa * qc, 0.0))) / (2 * qa), 0.0), 1.0)
 
 
 def obstacle_check(obstacles: Sequence, half_length: float,

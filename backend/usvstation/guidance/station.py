@@ -16,7 +16,9 @@ is not enough), so in a steady current it may hold bow or stern first. The headi
 follows the current as it turns, instead of being caught broadside. In slack water it
 turns towards the point before it goes (`EstimatedDrift.solve`, the speed scaled by the
 cosine of the heading still to turn) and, close to it, keeps its heading and stops its
-propellers.
+propellers; given a heading to hold (a standby point facing the ramp, a HOLD on the final
+approach), it turns to it and holds the point ahead or astern along it while the point
+lies within 1 m of that line, and stops its propellers once it points within 5 deg.
 
 `over_capacity` is true when the boat cannot hold: the estimated drift needs more than
 `capacity` x the top speed through the water; or the boat, having held its point (at
@@ -50,6 +52,7 @@ STRONG_CURRENT = 0.6  # of the top speed: a current the boat cannot ride out bro
 ASTERN_TURN = math.radians(135.0)  # a current this far round behind the bow: met astern
 HELD_SPEED = 0.3  # m/s over ground: at the point and this slow, the boat holds it
 BROADSIDE = math.radians(60.0)  # heading still to turn before the boat meets the current
+ALIGNED = math.radians(5.0)  # a held heading this close: the propellers may stop
 
 
 class StationKeeper:
@@ -73,6 +76,7 @@ class StationKeeper:
         self.astern_share = astern_share  # of the top speed: what astern thrust can hold
         self.max_offset = max_offset
         self.point: tuple[float, float] | None = None
+        self.heading: float | None = None  # the bow's way in slack water (None: free)
         self.astern = False
         self.off_point = False
         # the current is strong and the boat must still turn far to meet it: it drifts
@@ -81,10 +85,15 @@ class StationKeeper:
         self._last_t: float | None = None
         self._held = False
 
-    def hold_at(self, x: float, y: float) -> None:
+    def hold_at(self, x: float, y: float, heading: float | None = None) -> None:
+        """Hold (x, y); with `heading`, in slack water the bow points that way (a standby
+        point facing the ramp), the point held by going ahead or astern along it."""
         if not (math.isfinite(x) and math.isfinite(y)):
             raise ValueError(f"station keeping: hold point must be finite (got {x}, {y})")
+        if heading is not None and not math.isfinite(heading):
+            raise ValueError(f"station keeping: heading must be finite (got {heading})")
         self.point = (x, y)
+        self.heading = heading
         self._integral, self._last_t, self.off_point = (0.0, 0.0), None, False
         self.turning_in_strong_current = False
         self._held = False  # it has been at the point since hold_at
@@ -125,6 +134,10 @@ class StationKeeper:
             vx, vy = vx * self.speed_max / speed, vy * self.speed_max / speed
         cx, cy = self.drift.observer.fast  # react to a changing current within a second
         if math.hypot(*self.drift.observer.estimate) < self.weathervane_current:
+            if self.heading is not None and \
+                    abs(-dx * math.sin(self.heading) + dy * math.cos(self.heading)) \
+                    <= 0.5 * self.radius:
+                return self._along(vx, vy, pose.psi)
             sol = self.drift.solve(vx, vy, pose.psi)
             if sol.water_speed < self.idle_speed and math.hypot(vx, vy) < self.idle_speed:
                 return StationCommand(pose.psi, 0.0, None, True)
@@ -155,6 +168,17 @@ class StationKeeper:
         water = wx * c + wy * s  # negative: astern
         surge = water + cx * c + cy * s
         return StationCommand(psi, surge, water, False)
+
+    def _along(self, vx: float, vy: float, psi: float) -> StationCommand:
+        """Slack water, the point (nearly) ahead or astern: keep the bow on `heading` and go
+        ahead or astern along it (turning first); idle there once it points that way."""
+        h = self.heading
+        along = vx * math.cos(h) + vy * math.sin(h)
+        off = abs(angle_diff(h, psi))
+        if abs(along) < self.idle_speed and off < ALIGNED:
+            return StationCommand(psi, 0.0, None, True)
+        along *= max(math.cos(off), 0.0)
+        return StationCommand(h, along, along, False)
 
     def command(self, pose: Pose, t: float) -> GuidanceCommand:
         """The same as a GuidanceCommand (for a TrackingLoop); `finished` is never set."""

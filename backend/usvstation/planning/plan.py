@@ -20,7 +20,7 @@ from usvstation.planning.limits import check_memory
 from usvstation.planning.model import Plan, PlanMetrics, SmoothedPath, Waypoint
 from usvstation.planning.problem import Problem, sweep_moving
 from usvstation.planning.smoothing import smooth_path
-from usvstation.planning.start import Prefix, needs_prefix, prefixes, start_state
+from usvstation.planning.start import Prefix, needs_prefix, prefixes, start_state, x_needed
 from usvstation.planning.validate import current_vector, hull_clearance, plan_violations
 from usvstation.planning.warm import compiled, warm
 from usvstation.planning.xyt import ObstacleField
@@ -53,6 +53,42 @@ def plan_scenario(
         overrides["seed"] = seed
     opts = scenario.planner_options(**overrides)
     check_memory(scenario, opts)
+    straight = final_straight_options(scenario, opts)
+    if straight is not None:  # the final straight first, else the paper's run-in
+        try:
+            return plan_with(scenario, straight, clock, started)
+        except NoFeasiblePlan as exc:
+            return plan_with(scenario, opts, clock, started).warned(
+                f"no plan with a final straight of {straight.approach_length:g} m along the "
+                f"ramp axis ({exc}); planned with the {opts.approach_length:g} m run-in")
+    return plan_with(scenario, opts, clock, started)
+
+
+STRAIGHT_ALIGN_DEG = 1.0  # the final straight's last waypoint: within 1 deg of the axis
+
+
+def final_straight_options(scenario: Scenario, opts: IGAOptions) -> IGAOptions | None:
+    """The options of a recovery with `final_straight` (issue 24; an extension of paper
+    000): the last intermediate waypoint at least the first approach gate's distance out
+    (`vessel.gates_m[0]`) and within STRAIGHT_ALIGN_DEG of the ramp axis, so the last leg
+    is a straight along the axis on which the boat's gates can all be met. A start inside
+    the arrival cone (already coming in) keeps the straight it has room for without a
+    run-out. None: not asked for, not a recovery, or no longer than the paper's run-in."""
+    if not opts.final_straight or scenario.kind != "recovery":
+        return None
+    s = scenario.start
+    length = float(scenario.vessel.gates_m[0])
+    if abs(s.y) <= s.x * math.tan(math.radians(opts.align_max_deg)):
+        length = min(length, s.x - (x_needed(opts) - opts.approach_length))
+    if length <= opts.approach_length:
+        return None
+    return IGAOptions(**{**opts.model_dump(), "approach_length": length,
+                         "align_max_deg": min(opts.align_max_deg, STRAIGHT_ALIGN_DEG)})
+
+
+def plan_with(scenario: Scenario, opts: IGAOptions, clock: Clock = cpu_clock,
+              started: float | None = None) -> Plan:
+    """`plan_scenario` with these options (one budget for every attempt)."""
     budget = Budget(opts.evaluation_budget, opts.time_budget_s, clock, started)
     budget.excluding(warm, when=compiled)  # kernels loaded once per process; compiling is
     # not planning (planning/warm.py)
@@ -200,6 +236,8 @@ def build_plan(
         "time_margin_s": scenario.vessel.time_margin_s,
         "prefix_legs": 0 if prefix is None else prefix.legs,
     })
+    if scenario.kind == "recovery":
+        metrics = metrics.updated(final_straight_m=_r(straight_length(xs, ys)))
     ship = outline_clearance(scenario, xs, ys)
     if ship is not None:
         metrics = metrics.updated(ship_clearance_m=_r(ship))
@@ -236,6 +274,16 @@ def build_plan(
             plan = plan.warned("smoothed path dropped: it would bring the hull too close to an "
                                "obstacle; follow the waypoints")
     return plan
+
+
+def straight_length(xs: np.ndarray, ys: np.ndarray, tolerance: float = 0.5) -> float:
+    """Length of a recovery path's final straight: its last legs whose points all lie
+    within `tolerance` m of the ramp axis (y = 0), m."""
+    on = np.abs(ys) <= tolerance
+    k = len(xs) - 1
+    while k > 0 and on[k] and on[k - 1]:
+        k -= 1
+    return float(np.hypot(np.diff(xs[k:]), np.diff(ys[k:])).sum())
 
 
 def hull_field(scenario: Scenario) -> ObstacleField:

@@ -70,6 +70,12 @@ class IGAOptions(BaseModel):
     align_max_deg: float = Field(
         10.0, gt=0.0, le=45.0, description="last segment within this of the ramp axis"
     )
+    final_straight: bool = Field(
+        False, description="recovery (an extension of paper 000, issue 24): the last leg "
+        "runs along the ramp axis (within 1 deg) from at least the first approach gate "
+        "(vessel.gates_m[0]) in, so the boat is on the axis before its gates; a start off "
+        "the axis runs out first if it needs the room; without such a plan the paper's "
+        "run-in (approach_length, align_max_deg) with a warning")
 
     # fitness eq. 12: A / (a Fit_d + b Fit_T + c Fit_ang + d Fit_mal)
     weight_a: float = Field(4.0, ge=0.0, le=1e6, description="a, on Fit_d")

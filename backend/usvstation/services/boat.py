@@ -59,6 +59,8 @@ from usvstation.services.runs import Runs
 from usvstation.store.db import Store, utc_now
 
 PROGRESS_EVERY_S = 0.1  # at most this often per upload on the websocket
+SWAPPABLE = ("RUNNING", "GO_AROUND")  # boat states an upload is a hot swap in (GO_AROUND:
+# the boat takes it at its standby point as its new approach, protocol/README.md)
 StreamFactory = Callable[[], Awaitable[ByteStream]]
 
 
@@ -174,8 +176,9 @@ class BoatService:
     # --- missions ---------------------------------------------------------------------------
     async def create_mission(self, plan_id: str,
                              swap_at_ms: int | None = None) -> MissionView:
-        """Upload a plan: staged for START, or (boat RUNNING) hot-swapped at `swap_at_ms` of
-        boat uptime, by default the earliest instant the upload surely makes."""
+        """Upload a plan: staged for START, or (boat RUNNING, or GO_AROUND: the new approach
+        it takes at its standby point) hot-swapped at `swap_at_ms` of boat uptime, by
+        default the earliest instant the upload surely makes."""
         job = self.plans.get(plan_id)
         if job is None:
             raise NotFound(f"no plan {plan_id!r}")
@@ -190,9 +193,9 @@ class BoatService:
                                  "time")
         link = self._require_link()
         report = link.report
-        if report is not None and report.state in ("HOLD", "FAILSAFE", "GO_AROUND"):
+        if report is not None and report.state in ("HOLD", "FAILSAFE"):
             raise Conflict(f"the boat is {report.state}: RESUME or ABORT first")
-        running = report is not None and report.state == "RUNNING"
+        running = report is not None and report.state in SWAPPABLE
         if not running:
             swap_at_ms = 0
         elif swap_at_ms is None:
@@ -212,11 +215,12 @@ class BoatService:
         return rec.public()
 
     async def swap_mission(self, plan_id: str, swap_at_ms: int) -> MissionView:
-        """Hot swap (usv-link 2): the RUNNING boat replaces its mission by `plan_id`'s at
-        `swap_at_ms` of its uptime, where the plan's t = 0 lies. Returns once the boat
-        verified and scheduled it; 409 when it did not (the old mission runs on)."""
+        """Hot swap (usv-link 2): the RUNNING boat (or one at its go-around's standby point)
+        replaces its mission by `plan_id`'s at `swap_at_ms` of its uptime, where the plan's
+        t = 0 lies. Returns once the boat verified and scheduled it; 409 when it did not
+        (the old mission runs on)."""
         report = self._require_link().report
-        if report is None or report.state != "RUNNING":
+        if report is None or report.state not in SWAPPABLE:
             state = report.state if report is not None else "not reporting"
             raise Conflict(f"a hot swap needs a RUNNING boat; it is {state}")
         rec = self.missions[(await self.create_mission(plan_id, swap_at_ms))["id"]]

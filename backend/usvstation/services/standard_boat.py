@@ -38,9 +38,9 @@ class StandardBoatService(BoatService):
                              swap_at_ms: int | None = None) -> MissionView:
         link = self._require_link()
         report = link.report
-        if report is not None and report.state == "RUNNING":
-            raise Conflict("the vehicle is RUNNING: a stock autopilot has no timed hot swap; "
-                           "ABORT, then upload")
+        if report is not None and report.state in ("RUNNING", "GO_AROUND"):
+            raise Conflict(f"the vehicle is {report.state}: a stock autopilot has no timed "
+                           "hot swap; ABORT, then upload")
         if swap_at_ms:
             raise Conflict("a stock autopilot has no timed hot swap")
         return await super().create_mission(plan_id, 0)

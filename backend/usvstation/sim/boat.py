@@ -61,6 +61,7 @@ from usvstation.sim.vehicle import Vehicle, Waypoint
 
 S_IDLE, S_READY, S_RUNNING, S_HOLD, S_DONE, S_ABORTED, S_FAILSAFE, S_GO_AROUND = range(8)
 UNDER_WAY = (S_RUNNING, S_HOLD, S_FAILSAFE, S_GO_AROUND)  # a mission is being flown
+SWAPPABLE = (S_RUNNING, S_GO_AROUND)  # a hot swap may be staged (GO_AROUND: at standby)
 ST_NONE, ST_RECEIVING, ST_VERIFIED = range(3)
 R = mav  # result and reason constants live in the generated module
 STAGE_BEGIN, STAGE_ITEM, STAGE_END, STAGE_READ = 1, 2, 3, 4
@@ -379,9 +380,9 @@ class BoatProtocol:
             if st == S_RUNNING:
                 return R.MAV_RESULT_ACCEPTED, R.USV_COMMAND_REASON_NONE
             if st == S_GO_AROUND:  # a new approach, from the standby point only
-                if not self.vehicle.reapproach():
-                    self._text(mav.MAV_SEVERITY_WARNING,
-                               "RESUME refused: go-around not at standby yet", now)
+                problem = self.vehicle.reapproach()
+                if problem:
+                    self._text(mav.MAV_SEVERITY_WARNING, f"RESUME refused: {problem}", now)
                     return denied, R.USV_COMMAND_REASON_WRONG_STATE
                 self.state = S_RUNNING
                 self._text(mav.MAV_SEVERITY_INFO, "new approach from standby", now)
@@ -422,7 +423,7 @@ class BoatProtocol:
                        f"{MIN_ITEMS}..{wire.MAX_MISSION_ITEMS}", now)
             return self._mission_ack(mid, 0, R.USV_MISSION_BAD_COUNT, STAGE_BEGIN, now)
         running = self.state in UNDER_WAY
-        if (b.swap_at_ms == 0 and running) or (b.swap_at_ms and self.state != S_RUNNING):
+        if (b.swap_at_ms == 0 and running) or (b.swap_at_ms and self.state not in SWAPPABLE):
             return self._mission_ack(mid, 0, R.USV_MISSION_DENIED, STAGE_BEGIN, now)
         if st is not None and (st.mission_id, st.crc32, st.count, st.swap_at_ms) == \
                 (mid, b.crc32, b.count, b.swap_at_ms):
@@ -489,10 +490,12 @@ class BoatProtocol:
             return self._mission_ack(mid, 0, R.USV_MISSION_CRC_MISMATCH, STAGE_END, now)
         mission = ActiveMission(mid, st.crc32, items)
         if st.swap_at_ms:
-            if self.state != S_RUNNING or st.swap_at_ms <= self.uptime_ms:
+            problem = "instant passed" if st.swap_at_ms <= self.uptime_ms else \
+                self._swap_problem()
+            if problem:
                 self.staging = None
-                self._text(mav.MAV_SEVERITY_WARNING, f"swap of {mid} refused: instant passed "
-                           "or not running", now)
+                self._text(mav.MAV_SEVERITY_WARNING, f"swap of {mid} refused: {problem}",
+                           now)
                 return self._mission_ack(mid, 0, R.USV_MISSION_DENIED, STAGE_END, now)
             st.state = ST_VERIFIED
             self._swap_mission = mission
@@ -736,19 +739,40 @@ class BoatProtocol:
             self._text(mav.MAV_SEVERITY_INFO, "go-around: at standby, RESUME to approach",
                        now)
 
+    def _swap_problem(self, new: ActiveMission | None = None) -> str:
+        """Why a hot swap cannot be taken now ('' when it can): the boat must be RUNNING,
+        and not committed to its final approach (inside its first gate: its gates decide
+        arrival or go-around), or GO_AROUND keeping station at its standby point (the
+        station's new approach), `new`'s first waypoint then within the START radius."""
+        if self.state == S_RUNNING:
+            return "on the final approach" if getattr(self.vehicle, "committed", False) \
+                else ""
+        if self.state != S_GO_AROUND:
+            return "not running"
+        if not getattr(self.vehicle, "at_standby", False):
+            return "go-around not at standby yet"
+        if new is not None:
+            dist = self._distance_to(new.items[0])
+            if dist > self.cfg.start_radius_m:
+                return f"{dist:.1f} m from waypoint 0"
+        return ""
+
     def _do_swap(self, now: float) -> None:
         st, new = self.staging, self._swap_mission
         self.staging = None
-        if self.state != S_RUNNING or new is None:
-            self._text(mav.MAV_SEVERITY_WARNING, f"swap to {st.mission_id} dropped: not "
-                       "running at the instant", now)
+        problem = "not running" if new is None else self._swap_problem(new)
+        if problem:
+            self._text(mav.MAV_SEVERITY_WARNING, f"swap to {st.mission_id} dropped: "
+                       f"{problem}", now)
         else:
+            approach = self.state == S_GO_AROUND
             self.vehicle.set_mission(self._waypoints(new.items))
             self.vehicle.start()
-            self.active = new
+            self.active, self.state = new, S_RUNNING
             self.activations.append((self.boat_time, new.mission_id))
-            self._text(mav.MAV_SEVERITY_INFO, f"swapped to mission {new.mission_id} at "
-                       f"{self.uptime_ms} ms", now)
+            self._text(mav.MAV_SEVERITY_INFO, ("new approach: mission" if approach else
+                                               "swapped to mission") +
+                       f" {new.mission_id} at {self.uptime_ms} ms", now)
         self._swap_mission = None
         self._report(now)
 

@@ -46,9 +46,12 @@ import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 
+import numpy as np
+
 from usvstation.control.select import CONTROLLERS, make_controller
 from usvstation.dynamics import Environment, ThrustCommand, Vessel, VesselState, otter
 from usvstation.dynamics.params import HullMismatch, VesselParams
+from usvstation.geometry import angle_diff
 from usvstation.guidance import Trajectory
 from usvstation.guidance.approach import (
     ApproachGates,
@@ -78,6 +81,7 @@ BACK_OFF_SPEED = 0.8  # m/s astern over ground while backing away
 ENTRY_MARGIN = 15.0  # m before the first gate: the approach line is joined from here
 STRAIGHT_MARGIN = 5.0  # m: the approach takes over this far before the plan's final straight
 AXIS_TOLERANCE = 1.0  # m off the ramp axis: a plan's point still on its final straight
+PATH_SAMPLE_S = 1.0  # s between the samples of a path carried into the world frame
 
 
 @dataclass(frozen=True)
@@ -152,8 +156,8 @@ class DynamicVehicle:
         self.bend_rejected = False  # the approach line failed path_check: the plan's kept
         self._escape = None  # the escape route's guidance
         self._standby: tuple[float, float] | None = None
+        self._standby_on_plan: tuple[int, float] | None = None  # where on the plan it lies
         self._held_from: str | None = None  # the go-around phase a HOLD interrupted
-        self._back_heading = heading  # the heading a go-around backs away on
         self._path: Trajectory | None = None  # the timed path being flown
         self._straight = 0.0  # length of its final straight along the ramp axis
         self._tau = 0.0  # mission time
@@ -223,6 +227,19 @@ class DynamicVehicle:
         """The go-around's standby point (ramp frame) once chosen."""
         return self._standby
 
+    @property
+    def at_standby(self) -> bool:
+        """Keeping station at the go-around's standby point (a new approach may begin)."""
+        return self._phase == "standby" and self._standby is not None
+
+    @property
+    def committed(self) -> bool:
+        """On the final approach inside its first gate: the boat keeps this approach (its
+        gates decide arrival or go-around) and takes no new mission (a hot swap)."""
+        a = self._approach
+        return (self._phase == "track" and a is not None and a.state is not None
+                and a.state.distance <= self.arrival.gates[0])
+
     def set_mission(self, waypoints: Sequence[Waypoint]) -> None:
         self._wps = checked_mission(waypoints)
         self._guide, self._complete, self._segment = None, False, 0
@@ -254,7 +271,8 @@ class DynamicVehicle:
         if self._phase in ("go_around", "standby"):
             self._held_from = self._phase
             self._phase = "hold"
-            self.keeper.hold_at(self._meas.x, self._meas.y)
+            self.keeper.hold_at(self._meas.x, self._meas.y, heading=self._arrival_heading()
+                                if self._held_from == "standby" else None)
             self.pilot.reset()
             return
         if self._phase in ("track", "guided", "idle", "done"):
@@ -264,22 +282,65 @@ class DynamicVehicle:
         if self._phase == "hold" and self._held_from is not None:
             self._phase, self._held_from = self._held_from, None  # back to the go-around
             if self._phase == "standby" and self._standby is not None:
-                self.keeper.hold_at(*self._standby)
+                self.keeper.hold_at(*self._standby, heading=self._arrival_heading())
             self._command = None
             return
         if self._guide is not None and not self._complete and self._phase in ("hold", "guided"):
+            held = self._phase == "hold"
             self._phase, self._command = "track", None
             self._next_guidance = self._tau
+            if held and self._approach is not None:
+                self._rejoin_approach()
 
-    def reapproach(self) -> bool:
-        """A new approach from the standby point after a go-around (False: not there)."""
-        if self._phase != "standby" or self._standby is None or not self._wps:
-            return False
+    def _rejoin_approach(self) -> None:
+        """RESUME after a HOLD (or a failsafe) on the final approach: the boat stopped and
+        may have turned into the current, so the approach is joined anew where it is: the
+        gates still ahead of it are checked (those less than JOIN_MARGIN inside skipped,
+        never the last). Inside the last gate none is left: it goes on only from where it
+        would arrive now (within the arrival offset of the axis, the hull within the
+        arrival heading), else it goes around."""
+        approach = self._approach
+        s = self._meas
+        distance, lateral = approach.locate(s)
+        approach.restart()
+        if distance > self.arrival.gates[-1]:
+            self.gates.rejoin(distance)
+            return
+        heading = abs(angle_diff(s.psi - self.observer.compass_bias, approach.arrival))
+        if abs(lateral) > self.arrival.offset or heading > self.arrival.heading:
+            self._start_go_around(f"resumed {max(distance, 0.0):.1f} m out, {abs(lateral):.2f}"
+                                  f" m and {math.degrees(heading):.1f} deg off the axis")
+
+    def reapproach(self) -> str | None:
+        """A new approach from the standby point after a go-around (the boat's own, RESUME):
+        the plan flown on from the standby point when it lies on the plan (the escape route
+        went back along it), else straight to the ramp end. None when it began, else why
+        not (not at standby; the path is not clear of the obstacles the boat knows, at the
+        times it would fly it)."""
+        if not self.at_standby or not self._wps:
+            return "go-around not at standby yet"
+        rows = self._plan_from_standby()
+        if not self._clear_timed(Trajectory.from_xyt([(x, y, t + self._clock)
+                                                      for x, y, t in rows])):
+            return "new approach blocked by an obstacle"
+        self._fly(rows)
+        return None
+
+    def _plan_from_standby(self) -> list[tuple[float, float, float]]:
+        """The new approach's timed path: the plan's own legs and times from the standby
+        point on, or the straight line at the approach speed."""
         sx, sy = self._standby
-        gx, gy = self._wps[-1].x, self._wps[-1].y
+        wps = self._wps
+        if self._standby_on_plan is not None:
+            i, f = self._standby_on_plan
+            t0 = wps[i].t + f * (wps[i + 1].t - wps[i].t)
+            rows = [(sx, sy, 0.0)]
+            rows += [(w.x, w.y, w.t - t0) for w in wps[i + 1:] if w.t - t0 > 1e-3]
+            if len(rows) >= 2:
+                return rows
+        gx, gy = wps[-1].x, wps[-1].y
         speed = max(self._approach_speed(), 0.5)
-        self._fly([(sx, sy, 0.0), (gx, gy, math.hypot(gx - sx, gy - sy) / speed)])
-        return True
+        return [(sx, sy, 0.0), (gx, gy, math.hypot(gx - sx, gy - sy) / speed)]
 
     def abort(self) -> None:
         self._wps, self._guide, self._phase = [], None, "aborted"
@@ -342,7 +403,9 @@ class DynamicVehicle:
     # --- internals ----------------------------------------------------------------------
     def _keep_station(self) -> None:
         s = self._meas
-        self.keeper.hold_at(s.x, s.y)
+        # on the final approach the hull stays along the axis (in slack water)
+        self.keeper.hold_at(s.x, s.y, heading=self._approach.arrival if self._approach
+                            is not None and self._phase == "track" else None)
         self._phase = "hold" if self._guide else "idle"
         self.pilot.reset()
         if self._complete:
@@ -364,7 +427,7 @@ class DynamicVehicle:
             return
         self._fix = self.sensors.measure(self.vessel.state, t, self._ramp_truth(t))
         s = self._meas = self._measure(t)
-        if self._phase == "track" and self._passed_end(s):
+        if self._reached_ramp(s):
             self._complete = True
             self._phase = "done"
             self._on_ramp = self._ramp_pose(t)
@@ -409,6 +472,8 @@ class DynamicVehicle:
             self._begin_approach(s)
             if self._phase == "go_around":
                 return None
+        if self._unguarded(s):
+            return None
         if self._approach is None:
             cmd = self._guide.update(s, self._tau)
             self._segment = cmd.segment
@@ -419,6 +484,31 @@ class DynamicVehicle:
             self._start_go_around(gate.reason)
             return None
         return _Command(cmd.heading, cmd.speed, cmd.water_speed)
+
+    def _reached_ramp(self, s: Measurement) -> bool:
+        """Past the ramp end on its final approach: the ramp holds it. Also in a HOLD that
+        came too close to the ramp to stop short of it (under way at the ramp end, the
+        ramp catches the boat whatever it was told)."""
+        if self._phase not in ("track", "hold") or not self._passed_end(s):
+            return False
+        if self._phase == "hold":
+            return self._approach is not None and self._held_from is None
+        return not self._unguarded(s)
+
+    def _unguarded(self, s: Measurement) -> bool:
+        """The ramp guard of a recovery: the boat reaches the ramp only on its final
+        approach, through its last gate. Within the last gate's distance of the ramp end
+        (or past it) without the approach (a new mission swapped in close to the ramp, a
+        plan that comes in from the side, a START there) it goes around instead; True
+        then."""
+        if self.arrival is None or self._approach is not None:
+            return False
+        goal = self._wps[-1]
+        if math.hypot(s.x - goal.x, s.y - goal.y) > self.arrival.gates[-1] and \
+                not self._passed_end(s):
+            return False
+        self._start_go_around("at the ramp without an approach")
+        return True
 
     def _approach_speed(self) -> float:
         a, b = self._wps[-2], self._wps[-1]
@@ -449,8 +539,8 @@ class DynamicVehicle:
         first = self.arrival.gates[0]
         wanted_first, _ = prof.at(first)
         entry = first + ENTRY_MARGIN + abs(wanted_first)
-        if not 0.0 < distance <= entry:
-            return False
+        if not self.arrival.gates[-1] < distance <= entry:
+            return False  # (inside the last gate it is too late: the ramp guard acts)
         wanted, _ = prof.at(distance)
         # coming in from the side, the plan brings it round first
         return abs(lateral) <= abs(wanted) + max(3.0, 0.15 * distance)
@@ -487,8 +577,7 @@ class DynamicVehicle:
         for d in (0.75 * distance, 0.5 * distance, 0.25 * distance, 0.0):
             off, _ = prof.at(d)
             path.append((g[0] - d * c - off * sn, g[1] - d * sn + off * c))
-        if self.path_check is not None and not self.path_check(
-                self._timed(path, prof.water_speed)):
+        if not self._clear(path, prof.water_speed):
             self.bend_rejected = True  # keep to the plan's own final leg (the axis) ...
             approach = self._new_approach(line_override=0.0)
             first = self.arrival.gates[0]
@@ -499,12 +588,35 @@ class DynamicVehicle:
         self._approach = approach
         self.gates.joined(distance)
 
-    def _timed(self, points: list[tuple[float, float]], speed: float) -> Trajectory:
-        rows, t = [(points[0][0], points[0][1], self._tau)], self._tau
+    def _timed(self, points: list[tuple[float, float]], speed: float,
+               start: float = 0.0) -> Trajectory:
+        """`points` (ramp frame) flown at `speed` from time `start`."""
+        rows, t = [(points[0][0], points[0][1], start)], start
         for (ax, ay), (bx, by) in itertools.pairwise(points):
             t += max(math.hypot(bx - ax, by - ay), 0.1) / max(speed, 0.3)
             rows.append((bx, by, t))
         return Trajectory.from_xyt(rows)
+
+    def _clear(self, points: list[tuple[float, float]], speed: float) -> bool:
+        """True when `points` (ramp frame), flown from now at `speed`, keep clear of every
+        obstacle the boat knows (`path_check`: the scenario's circles, fixed or moving in
+        the world frame, at the times of the vehicle's clock, which runs with the sea's).
+        On a moving ramp the path is carried into the world frame with the ramp's motion
+        as the boat knows it (sampled every PATH_SAMPLE_S)."""
+        return self._clear_timed(self._timed(points, speed, self._clock))
+
+    def _clear_timed(self, path: Trajectory) -> bool:
+        """`_clear` for a timed path whose times are on the vehicle's clock."""
+        if self.path_check is None:
+            return True
+        if not self._motion.identity:
+            n = max(int((path.end_time - path.start_time) / PATH_SAMPLE_S), 1) + 1
+            rows = []
+            for t in np.linspace(path.start_time, path.end_time, n):
+                x, y = path.position_at(np.array([t]))[0]
+                rows.append((*self._motion.at(float(t)).to_world(float(x), float(y)), float(t)))
+            path = Trajectory.from_xyt(rows)
+        return self.path_check(path)
 
     def _nav_ok(self) -> bool:
         """An RTK-class fix, not dead-reckoned through an outage."""
@@ -512,7 +624,6 @@ class DynamicVehicle:
                 and self.sensors.fix_age < 1.0)
 
     def _start_go_around(self, reason: str) -> None:
-        self._back_heading = self._meas.psi
         self.go_around = reason
         self.go_arounds += 1
         self._phase = "go_around"
@@ -523,15 +634,17 @@ class DynamicVehicle:
         """Back off from the ramp when close, then fly the first clear escape route to
         the standby point."""
         if self._escape is None:
-            if self._backing_off(s):  # the heading it had, astern over ground
-                return _Command(self._back_heading, -BACK_OFF_SPEED, None)
+            if self._backing_off(s):  # astern along the axis, the bow to the ramp
+                a = self._arrival_heading()
+                turn = max(math.cos(angle_diff(a, s.psi - self.observer.compass_bias)), 0.0)
+                return _Command(a + self.observer.compass_bias, -BACK_OFF_SPEED * turn, None)
             self._plan_escape(s)
             if self._escape is None:
                 return None  # holding (standby) where it stopped
         cmd = self._escape.update(s, self._tau)
         if self._escape.finished:
             self._phase = "standby"
-            self.keeper.hold_at(*self._standby)
+            self.keeper.hold_at(*self._standby, heading=self._arrival_heading())
         return _Command(cmd.heading, cmd.speed, cmd.water_speed)
 
     def _backing_off(self, s: Measurement) -> bool:
@@ -545,16 +658,17 @@ class DynamicVehicle:
         standby = standby_point(goal, self._arrival_heading(), self.arrival)
         plan = [(w.x, w.y) for w in self._wps]
         for route in escape_routes((s.x, s.y), standby, plan, goal, self.arrival):
-            tr = self._timed(route, ESCAPE_SPEED)
-            if self.path_check is None or self.path_check(tr):
-                self._standby = route[-1]
-                self._escape = CompensatedAVLOS(tr, self.drift, LOOKAHEAD,
+            if self._clear(route.points, ESCAPE_SPEED):
+                self._standby, self._standby_on_plan = route.standby, route.on_plan
+                self._escape = CompensatedAVLOS(self._timed(route.points, ESCAPE_SPEED,
+                                                            self._tau),
+                                                self.drift, LOOKAHEAD,
                                                 speed_max=self.params.top_speed,
                                                 arrive_radius=1.0, decide_at=-1.0)
                 return
-        self._standby = (s.x, s.y)  # nowhere clear to go: keep station here
+        self._standby, self._standby_on_plan = (s.x, s.y), None  # nowhere clear: stay
         self._phase = "standby"
-        self.keeper.hold_at(s.x, s.y)
+        self.keeper.hold_at(s.x, s.y, heading=self._arrival_heading())
 
     def _passed_end(self, s: Measurement) -> bool:
         """True once the boat is past the line through the last waypoint, across the last leg."""

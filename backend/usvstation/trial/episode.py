@@ -309,6 +309,7 @@ class Operator:
         self.confirmed: set[str] = set()
         self.planned_s: float | None = None  # the plan's duration
         self.approaches = 0  # go-arounds answered (a new approach, or at the last, ABORT)
+        self.standby_seen: set[tuple[str, str]] = set()
 
     async def _wait(self, path: str, done: Any, limit_s: float) -> dict | None:
         """GET `path` every OPERATOR_DT until `done(body)`; None after `limit_s`."""
@@ -327,7 +328,8 @@ class Operator:
             return None
         # planned against the live world, as the console offers: the ships on AIS and the
         # scenario's obstacles where they are now, the ship's way as an apparent current
-        world = (await self.c.get("/api/world/scenario")).json()["scenario"]
+        world = with_final_straight((await self.c.get("/api/world/scenario")).json()[
+            "scenario"])
         r = await self.c.post("/api/plans", json={"planner": self.ep.planner, "seed": 1,
                                                   "scenario": world})
         job = await self._wait(f"/api/plans/{r.json()['id']}",
@@ -347,10 +349,22 @@ class Operator:
             return None
         return mission["id"]
 
-    @staticmethod
-    def at_standby(boat: dict[str, Any]) -> int:
-        """How many times the boat has said it waits at its standby point (STATUSTEXT)."""
-        return sum(1 for s in boat["status"] if "at standby" in s["text"])
+    def at_standby(self, boat: dict[str, Any]) -> bool:
+        """True once for every time the boat says it waits at its standby point (a new
+        STATUSTEXT "go-around: at standby ...", told apart by its time)."""
+        new = {(s["time"], s["text"]) for s in boat["status"] if "at standby" in s["text"]}
+        fresh = bool(new - self.standby_seen)
+        self.standby_seen |= new
+        return fresh
+
+    async def new_approach(self) -> bool:
+        """The station's new approach for a boat at its standby point (`new_approach`), or
+        the boat's own (RESUME) when the station has none; True when one began."""
+        ok, note = await new_approach(self.c, self.clock, self.ep.planner)
+        if ok:
+            return True
+        self.notes.append(note)
+        return await self.command("resume")
 
     async def boat(self) -> dict[str, Any]:
         """GET /api/boat: what the console shows of the boat."""
@@ -375,6 +389,57 @@ class Operator:
             if self.clock.now() - first >= CONFIRM_DELAY_S:
                 self.confirmed.add(rec["id"])
                 await self.c.post(f"/api/replans/{rec['id']}/confirm")
+
+
+def with_final_straight(scenario: dict[str, Any]) -> dict[str, Any]:
+    """A recovery scenario document planned with the planner's final straight along the ramp
+    axis (planner option `final_straight`, docs/planner.md): what the mate asks for."""
+    return {**scenario, "planner": {**(scenario.get("planner") or {}), "final_straight": True}}
+
+
+async def new_approach(client: Any, clock: SimClock, planner: str = "iga",
+                       seed: int = 1) -> tuple[bool, str]:
+    """The station's new approach for a boat that went around and keeps station at its
+    standby point (protocol/README.md, GO_AROUND): a plan from where the boat is (its
+    telemetry: ramp-frame position, heading, speed) against the live world
+    (`GET /api/world/scenario`: the ships on AIS and the charted obstacles where they are
+    now, the ship's way as an apparent current), with the planner's final straight along
+    the ramp axis, uploaded with `POST /api/missions`, which
+    the boat takes as a hot swap at its standby point. (True, mission id) once the boat
+    flies it; else (False, why)."""
+
+    async def until(path: str, done: Any, limit_s: float) -> dict | None:
+        end = clock.now() + limit_s
+        while clock.now() < end:
+            r = await client.get(path)
+            if r.status_code == 200 and done(r.json()):
+                return r.json()
+            await clock.sleep(OPERATOR_DT)
+        return None
+
+    row = (await client.get("/api/boat")).json()["telemetry"]
+    if not row or row.get("x") is None or row.get("ramp_heading_deg") is None:
+        return False, "new approach: no ramp-frame telemetry"
+    world = with_final_straight((await client.get("/api/world/scenario")).json()["scenario"])
+    world["start"] = {"x": row["x"], "y": row["y"], "speed": row["speed"],
+                      "heading_deg": row["ramp_heading_deg"] % 360.0}
+    r = await client.post("/api/plans", json={"planner": planner, "seed": seed,
+                                              "scenario": world})
+    if r.status_code != 202:
+        return False, f"new approach: plan refused: {r.json()['detail']}"
+    job = await until(f"/api/plans/{r.json()['id']}",
+                      lambda j: j["status"] not in ("queued", "running"), 120.0)
+    if job is None or job["status"] != "done":
+        return False, f"new approach: no plan: {job and job['error']}"
+    r = await client.post("/api/missions", json={"plan_id": job["id"]})
+    if r.status_code != 202:
+        return False, f"new approach: upload refused: {r.json()['detail']}"
+    mission_id = r.json()["id"]
+    flown = await until(f"/api/missions/{mission_id}",
+                        lambda m: m["state"] not in ("uploading", "verified"), 60.0)
+    if flown is None or flown["state"] != "active":
+        return False, f"new approach: not taken: {flown and (flown['error'] or flown['state'])}"
+    return True, mission_id
 
 
 # --------------------------------------------------------------------------------- episode
@@ -480,12 +545,13 @@ async def _sail(clock: SimClock, station: Station, operator: Operator, judge: Ju
                 and clock.now() - resumed_at >= RESUME_EVERY_S:
             resumed_at = clock.now()
             await operator.command("resume")
-        elif state == "GO_AROUND" and operator.at_standby(boat) > operator.approaches:
-            # the boat went around and waits at its standby point: the console offers a new
-            # approach; the mate takes it up to MAX_APPROACHES times, then aborts
+        elif state == "GO_AROUND" and operator.at_standby(boat):
+            # the boat went around and waits at its standby point: the station offers a new
+            # approach (planned from there against the live world); the mate takes it up to
+            # MAX_APPROACHES times, then aborts
             operator.approaches += 1
             if operator.approaches < MAX_APPROACHES:
-                await operator.command("resume")
+                await operator.new_approach()
             else:
                 await operator.command("abort")
                 return

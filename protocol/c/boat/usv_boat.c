@@ -357,6 +357,9 @@ static void fill_state(usv_boat_t *b, mavlink_usv_mission_state_t *s)
 }
 
 static void swap_if_due(usv_boat_t *b, uint32_t now);
+static const char *swap_problem(usv_boat_t *b, int at_instant);
+static int final_leg(usv_boat_t *b, float *d, float *x, float *course);
+static void start_go_around(usv_boat_t *b, float gate, const char *why, float value);
 
 static void send_state(usv_boat_t *b)
 {
@@ -579,7 +582,8 @@ static void on_begin(usv_boat_t *b, const mavlink_message_t *msg, uint32_t now)
         return;
     }
     if ((m.swap_at_ms == 0u && under_way) ||
-        (m.swap_at_ms != 0u && b->state != USV_BOAT_STATE_RUNNING)) {
+        (m.swap_at_ms != 0u && b->state != USV_BOAT_STATE_RUNNING &&
+         b->state != USV_BOAT_STATE_GO_AROUND)) {
         send_mission_ack(b, msg, m.mission_id, 0, USV_MISSION_DENIED, STAGE_BEGIN);
         return;
     }
@@ -751,12 +755,15 @@ static void on_end(usv_boat_t *b, const mavlink_message_t *msg, uint32_t now)
         return;
     }
     if (b->staged_swap_at != 0u) {
-        if (b->state != USV_BOAT_STATE_RUNNING || !at_or_after(b->staged_swap_at, now + 1u)) {
+        const char *why = !at_or_after(b->staged_swap_at, now + 1u) ? "instant passed"
+                                                                     : swap_problem(b, 0);
+        if (why != NULL) {
             drop_staging(b);
             send_mission_ack(b, msg, e.mission_id, 0, USV_MISSION_DENIED, STAGE_END);
             text_begin(&t, "swap of ");
             tx_uint(&t, e.mission_id);
-            tx_str(&t, " refused: instant passed or not running");
+            tx_str(&t, " refused: ");
+            tx_str(&t, why);
             send_text(b, MAV_SEVERITY_WARNING, &t);
             return;
         }
@@ -896,6 +903,19 @@ static uint8_t do_command(usv_boat_t *b, uint16_t cmd, const mavlink_command_int
         }
         b->t0_ms += now - b->hold_since_ms; /* the schedule shifted by the time held */
         b->state = USV_BOAT_STATE_RUNNING;
+        if (b->gate_leg) { /* held on the final leg: the gates still ahead are armed again */
+            float d, x, course;
+            uint8_t k = 0;
+            if (final_leg(b, &d, &x, &course) && d <= GATE_M[GATES - 1]) {
+                start_go_around(b, 0.0f, "resumed inside the last gate", -1.0f);
+                return MAV_RESULT_ACCEPTED;
+            }
+            while (k < GATES && GATE_M[k] >= d) {
+                k++;
+            }
+            b->gate_next = k;
+            b->gate_leg = 0; /* joined again: gates too close inside it are skipped */
+        }
         return MAV_RESULT_ACCEPTED;
     case MAV_CMD_USV_ABORT: /* always acts: propellers stop, missions and staging dropped */
         drop_staging(b);
@@ -1496,9 +1516,12 @@ static void start_go_around(usv_boat_t *b, float gate, const char *why, float va
     b->at_standby = 0;
     b->guidance_on = 0;
     b->state = USV_BOAT_STATE_GO_AROUND;
-    text_begin(&t, "go-around: gate ");
-    tx_uint(&t, (uint32_t)gate);
-    tx_str(&t, " m: ");
+    text_begin(&t, "go-around: ");
+    if (gate > 0.0f) {
+        tx_str(&t, "gate ");
+        tx_uint(&t, (uint32_t)gate);
+        tx_str(&t, " m: ");
+    }
     tx_str(&t, why);
     if (value >= 0.0f) {
         tx_str(&t, " ");
@@ -1566,6 +1589,57 @@ static void fly_go_around(usv_boat_t *b)
     steer(b, atan2f(e, n), clampf(TRACK_GAIN * d, 0.5f, 1.5f));
 }
 
+/* On the final leg (steering to the last item): `d` metres to go along it, `x` the
+ * cross-track (m, left positive), `course` the leg's direction (rad from north). Returns 0
+ * when not on it. */
+static int final_leg(usv_boat_t *b, float *d, float *x, float *course)
+{
+    const usv_mission_t *m = active_mission(b);
+    uint16_t last = (uint16_t)(m->count - 1u);
+    float fn, fe, gn, ge, flen;
+    if (!b->has_active || last == 0u || b->current_seq + 1u < last) {
+        return 0;
+    }
+    local_ne(m->lat[last - 1u], m->lon[last - 1u], m->lat[last], m->lon[last], &fn, &fe);
+    local_ne(m->lat[last], m->lon[last], b->nav.lat_e7, b->nav.lon_e7, &gn, &ge);
+    flen = sqrtf(fn * fn + fe * fe);
+    if (flen <= 1e-3f) {
+        return 0;
+    }
+    *d = -(gn * fn + ge * fe) / flen;
+    *x = (fe * gn - fn * ge) / flen;
+    *course = atan2f(fe, fn);
+    return 1;
+}
+
+/* Why a hot swap cannot be taken now (NULL: it can): RUNNING and not committed to the
+ * final approach (on the final leg inside the first gate: the gates decide), or GO_AROUND
+ * keeping station at the standby item (the station's new approach), the new mission's
+ * item 0 then within the START radius (`at_instant`: the staged mission is checked). */
+static const char *swap_problem(usv_boat_t *b, int at_instant)
+{
+    float d, x, course;
+    if (b->state == USV_BOAT_STATE_RUNNING) {
+        if (b->gate_leg && final_leg(b, &d, &x, &course) && d <= GATE_M[0]) {
+            return "on the final approach";
+        }
+        return NULL;
+    }
+    if (b->state != USV_BOAT_STATE_GO_AROUND) {
+        return "not running";
+    }
+    if (!b->at_standby) {
+        return "go-around not at standby yet";
+    }
+    if (at_instant) {
+        const usv_mission_t *g = staged_mission(b);
+        if (dist_to(b, g->lat[0], g->lon[0]) > b->cfg.start_radius_m) {
+            return "too far from waypoint 0";
+        }
+    }
+    return NULL;
+}
+
 /* Track the timed waypoints: the reference point moves linearly in time along each leg;
  * velocity command = leg velocity + TRACK_GAIN * position error. */
 static void track(usv_boat_t *b, uint32_t now)
@@ -1583,16 +1657,9 @@ static void track(usv_boat_t *b, uint32_t now)
     }
     b->current_seq = i;
     if (last > 0u) { /* the approach gates on the final leg */
-        float fn, fe, gn, ge, flen, fd, fx;
-        local_ne(m->lat[last - 1u], m->lon[last - 1u], m->lat[last], m->lon[last], &fn, &fe);
-        local_ne(m->lat[last], m->lon[last], b->nav.lat_e7, b->nav.lon_e7, &gn, &ge);
-        flen = sqrtf(fn * fn + fe * fe);
-        if (flen > 1e-3f && i + 1u >= last) {
-            fd = -(gn * fn + ge * fe) / flen;
-            fx = (fe * gn - fn * ge) / flen;
-            if (fd > 0.0f && check_gates(b, fd, fx, atan2f(fe, fn))) {
-                return;
-            }
+        float fd, fx, course;
+        if (final_leg(b, &fd, &fx, &course) && fd > 0.0f && check_gates(b, fd, fx, course)) {
+            return;
         }
     }
     if (i >= last) {
@@ -1641,7 +1708,9 @@ static void swap_if_due(usv_boat_t *b, uint32_t now)
     text_t t;
     if (b->staging == USV_STAGING_VERIFIED && at_or_after(now, b->staged_swap_at)) {
         uint32_t at = b->staged_swap_at;
-        if (b->state == USV_BOAT_STATE_RUNNING) {
+        const char *why = swap_problem(b, 1);
+        if (why == NULL) {
+            int approach = b->state == USV_BOAT_STATE_GO_AROUND;
             b->active ^= 1u;
             b->staging = USV_STAGING_NONE;
             b->staged_received = 0;
@@ -1650,7 +1719,9 @@ static void swap_if_due(usv_boat_t *b, uint32_t now)
             b->current_seq = 0;
             b->guidance_on = 0;
             b->gate_next = b->gate_leg = 0;
-            text_begin(&t, "swapped to mission ");
+            b->go_around = b->at_standby = 0;
+            b->state = USV_BOAT_STATE_RUNNING;
+            text_begin(&t, approach ? "new approach: mission " : "swapped to mission ");
             tx_uint(&t, active_mission(b)->id);
             tx_str(&t, " at ");
             tx_uint(&t, at);
@@ -1659,7 +1730,8 @@ static void swap_if_due(usv_boat_t *b, uint32_t now)
         } else {
             text_begin(&t, "swap to ");
             tx_uint(&t, staged_mission(b)->id);
-            tx_str(&t, " dropped: not running at the instant");
+            tx_str(&t, " dropped: ");
+            tx_str(&t, why);
             drop_staging(b);
             send_text(b, MAV_SEVERITY_WARNING, &t);
         }
