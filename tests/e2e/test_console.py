@@ -100,7 +100,7 @@ def test_plan_upload_run_and_download(page, station, artifacts):
     page.click("#cmd-start")  # START always asks first
     page.click("#start-confirm")
     expect(page.locator("#command-result")).to_have_text("START: ACCEPTED, boat RUNNING")
-    expect(page.locator("#mission-state")).to_contain_text("active")
+    expect(page.locator("#mission-state")).to_contain_text("active", timeout=20_000)
     track = page.locator("#track-points")
     expect(track).not_to_have_text("0", timeout=10_000)
     first = int(track.inner_text())

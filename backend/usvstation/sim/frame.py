@@ -44,9 +44,10 @@ class RampMotion:
         dt = t - self.t0
         if dt == 0.0:
             return self
-        if self.omega == 0.0:
-            return replace(self, x=self.x + self.vx * dt, y=self.y + self.vy * dt, t0=t)
         turn = self.omega * dt
+        if abs(turn) < 1e-12:  # straight (also a yaw rate so small its turn underflows)
+            return replace(self, x=self.x + self.vx * dt, y=self.y + self.vy * dt,
+                           theta=self.theta + turn, t0=t)
         c, s = math.cos(turn / 2), math.sin(turn / 2)
         # the chord of a constant-rate turn: along the mid-turn velocity, |v| 2 sin(a/2)/omega
         chord = 2.0 * math.sin(turn / 2) / self.omega
