@@ -113,8 +113,8 @@ def test_plan_upload_run_and_download(page, station, artifacts):
     assert math.dist(before, moved) > 40  # pixels, about 4 m at this zoom
     # the real track is drawn (Leaflet simplifies a polyline at the screen's resolution,
     # so its vertex count follows the map's zoom, not the number of fixes)
-    d = page.locator("path.real-track").get_attribute("d")
-    assert d.count("L") >= 3
+    expect(page.locator("path.real-track")).to_have_attribute("d", re.compile(r"(L[^L]+){3}"),
+                                                              timeout=20_000)
     page.screenshot(path=artifacts / "console-running.png")
 
     # the run completes at the ramp; planned and real on map and charts
