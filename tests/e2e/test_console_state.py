@@ -139,6 +139,18 @@ def quick_station(tmp_path):
     st.stop()
 
 
+def upload_when_the_link_is_up(st: StationProcess, plan_id: str) -> dict:
+    """POST /api/missions, again while the station answers 503 (at 100x a busy machine
+    misses the boat's 3 s of boat time, 30 ms of wall time, and the link drops a moment)."""
+    deadline = time.monotonic() + 30
+    while True:
+        r = st.client.post("/api/missions", json={"plan_id": plan_id})
+        if r.status_code != 503 or time.monotonic() > deadline:
+            assert r.status_code == 202, r.text
+            return r.json()
+        time.sleep(0.2)
+
+
 def test_a_run_ends_when_the_boat_reports_done_between_telemetry_frames(browser, quick_station):
     st = quick_station
     c = st.client
@@ -147,7 +159,7 @@ def test_a_run_ends_when_the_boat_reports_done_between_telemetry_frames(browser,
     try:
         open_console(page, st)
         plan = st.wait_plan(c.post("/api/plans", json={"seed": 1}).json()["id"])
-        mission = c.post("/api/missions", json={"plan_id": plan["id"]}).json()
+        mission = upload_when_the_link_is_up(st, plan["id"])
         uploaded = st.wait(f"/api/missions/{mission['id']}", "state", ("uploading",), 20)
         assert uploaded["state"] == "verified", uploaded
         started = c.post("/api/boat/command", json={"command": "start",

@@ -208,7 +208,10 @@ def test_station_recovers_a_mavsdk_vehicle(tmp_path):
         modes = len(vehicle.of("mode"))
         answer = command(st, "hold")
         assert answer["state"] == "HOLD", answer
-        asked = [e for e in vehicle.of("mode")[modes:]]
+        # the vehicle's own log of what it was asked (its events arrive on their own pipe)
+        vehicle.wait(lambda: any(e["mode"] == "OFFBOARD" for e in vehicle.of("mode")[modes:]),
+                     10, "the mode requests of HOLD")
+        asked = vehicle.of("mode")[modes:]
         assert asked[0]["mode"] == "HOLD" and asked[0]["result"] == "COMMAND_DENIED"
         assert asked[-1]["mode"] == "OFFBOARD" and asked[-1]["result"] == "SUCCESS"
         n = len(vehicle.of("target"))
@@ -219,6 +222,7 @@ def test_station_recovers_a_mavsdk_vehicle(tmp_path):
 
         modes = len(vehicle.of("mode"))
         assert command(st, "resume")["state"] == "RUNNING"
+        vehicle.wait(lambda: len(vehicle.of("mode")) > modes, 10, "the mode request of RESUME")
         assert vehicle.of("mode")[modes]["mode"] == "OFFBOARD"
         n = len(vehicle.of("target"))
         vehicle.wait(lambda: len(vehicle.of("target")) >= n + 5, 10, "targets after RESUME")
