@@ -227,6 +227,8 @@ class PlanService:
         self._runners: list[asyncio.Task] = []
         self._reapers: set[asyncio.Task] = set()
         self._ctx = multiprocessing.get_context("forkserver")
+        # before the forkserver starts: it imports the planners and loads the kernels once
+        self._ctx.set_forkserver_preload(["__main__", "usvstation.planning.preload"])
 
     async def start(self) -> None:
         for job in await asyncio.to_thread(self.store.plans):
