@@ -36,7 +36,7 @@ serve: run
 # Three workers (pytest-xdist), one module per worker at a time so a module's station
 # fixture starts once: most tests wait on a simulated boat, so three fit on two cores.
 test: setup
-	$(BIN)/python -m pytest -n 3 --dist loadscope
+	$(BIN)/python -m pytest -n 4 --dist loadscope
 
 # Unit tests only (no servers, browsers, ptys, process pools or benchmarks): under a minute.
 test-fast: setup

@@ -226,6 +226,7 @@ class Judge:
     scenario: Scenario
     clock: SimClock
     min_clearance_m: float = math.inf
+    closest: str | None = None  # the ship or obstacle of min_clearance_m
     states: list[str] = field(default_factory=list)
     arrival: tuple[float, float, float] | None = None  # (t, offset m, heading error deg)
     started_at: float | None = None
@@ -244,9 +245,10 @@ class Judge:
         bx, by = ramp.to_ramp(truth.x, truth.y)  # the boat in the ship-fixed ramp frame
         true_hull = getattr(boat.vehicle, "true_params", None)
         half = (true_hull.length if true_hull is not None else self.scenario.vessel.length) / 2
-        for ox, oy, radius in self._others(ramp):
-            self.min_clearance_m = min(self.min_clearance_m,
-                                       math.hypot(bx - ox, by - oy) - half - radius)
+        for ox, oy, radius, name in self._others(ramp):
+            clearance = math.hypot(bx - ox, by - oy) - half - radius
+            if clearance < self.min_clearance_m:
+                self.min_clearance_m, self.closest = clearance, name
         if state == "DONE" and self.arrival is None:
             heading = math.degrees(truth.heading - ramp.theta)
             heading_err = abs((heading - 180.0 + 180.0) % 360.0 - 180.0)
@@ -267,8 +269,8 @@ class Judge:
         turned = sea.model.ramp_bearing_at(t) - sea.model.frame0.ramp_bearing_deg
         return RampPose(float(x), float(y), -math.radians(turned))  # compass is clockwise
 
-    def _others(self, ramp: RampPose) -> list[tuple[float, float, float]]:
-        """(x, y, radius) in the ship-fixed ramp frame of every ship and obstacle now: the
+    def _others(self, ramp: RampPose) -> list[tuple[float, float, float, str]]:
+        """(x, y, radius, name) in the ship-fixed ramp frame of every ship and obstacle now: the
         ships of the simulated sea, and the scenario's obstacles as charted hazards (fixed
         over ground where the origin puts them at t = 0, moving with their own velocity),
         as the station's world model keeps them."""
@@ -278,9 +280,11 @@ class Judge:
         if sea is not None:
             for ship, truth in zip(sea.model.traffic, sea.model.traffic_at(t), strict=True):
                 x, y = sea.model.frame0.enu_to_ramp(truth.east, truth.north)
-                out.append((*ramp.to_ramp(float(x), float(y)), ship.length / 2.0))
-        for o in self.scenario.obstacles:
-            out.append((*ramp.to_ramp(o.x + o.vx * t, o.y + o.vy * t), o.radius))
+                out.append((*ramp.to_ramp(float(x), float(y)), ship.length / 2.0,
+                            f"ship {ship.name or ship.mmsi}"))
+        for i, o in enumerate(self.scenario.obstacles):
+            out.append((*ramp.to_ramp(o.x + o.vx * t, o.y + o.vy * t), o.radius,
+                        f"obstacles[{i}]"))
         return out
 
     def outcome(self) -> str:
@@ -596,6 +600,7 @@ def _line(ep: Episode, judge: Judge, operator: Operator | None, alerts: list[str
                                  and arrival[2] <= ARRIVAL_GOOD_DEG),
         "min_hull_clearance_m": (None if math.isinf(judge.min_clearance_m)
                                  else round(judge.min_clearance_m, 3)),
+        "closest": judge.closest,
         "alerts": len(alerts), "alert_kinds": sorted(set(alerts)),
         "go_arounds": judge.states.count("GO_AROUND"),
         "replans": len(replans),

@@ -53,6 +53,7 @@ def report(folder: Path) -> dict[str, Any]:
                              "p95_offset_m": [p95["lo"], p95["hi"]],
                              "p95_heading_deg": [h95["lo"], h95["hi"]]}},
         "min_hull_clearance_m": min(clearances) if clearances else None,
+        "touched": _touched(rows),
         "alerts_per_episode": round(float(np.mean([r["alerts"] for r in rows])), 2),
         "replans": sum(r["replans"] for r in rows),
         "replans_applied": sum(r["replans_applied"] for r in rows),
@@ -60,6 +61,16 @@ def report(folder: Path) -> dict[str, Any]:
                                     50)["value"],
         "by_family": _by_family(rows),
     }
+
+
+def _touched(rows: list[dict[str, Any]]) -> dict[str, int]:
+    """How many episodes' hulls touched each ship or obstacle (negative clearance)."""
+    out: dict[str, int] = {}
+    for r in rows:
+        if (r["min_hull_clearance_m"] or 0.0) < 0.0:
+            name = r.get("closest") or "unknown"
+            out[name] = out.get(name, 0) + 1
+    return dict(sorted(out.items()))
 
 
 def _by_family(rows: list[dict[str, Any]]) -> dict[str, dict[str, dict[str, int]]]:
@@ -90,7 +101,9 @@ def format_report(result: dict[str, Any]) -> str:
     lines += ["", f"arrival offset p50 {a['p50_offset_m']} m, p95 {a['p95_offset_m']} m; "
                   f"heading p95 {a['p95_heading_deg']} deg; within 0.3 m / 5 deg: "
                   f"{a['within_0_3m_5deg']}",
-              f"minimum hull clearance {result['min_hull_clearance_m']} m; "
+              f"minimum hull clearance {result['min_hull_clearance_m']} m"
+              + (f" (touched: {', '.join(f'{k} {v}' for k, v in result['touched'].items())})"
+                 if result["touched"] else "") + "; "
               f"{result['alerts_per_episode']} alerts an episode; "
               f"{result['replans_applied']} of {result['replans']} re-plans applied"]
     return "\n".join(lines)
