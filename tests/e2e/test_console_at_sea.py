@@ -1,6 +1,6 @@
 """The console at sea (issue 25), in Chromium against a real `usv-station serve`: the mother
 ship makes 1 m/s west (its simulated sea reports it over NMEA, and an AIS target that crosses
-onto the plan and crawls across it), `--replan confirm`, the boat and the sea at 2.5x.
+onto the plan and crawls across it), `--replan confirm`, the boat and the sea at 5x.
 
 - The mate plans from the boat, uploads, starts; the target and its vector are on the map, the
   table shows its DCPA/TCPA, the alert bar shows the warning while the Plan card is scrolled
