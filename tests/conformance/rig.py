@@ -82,6 +82,9 @@ class Radio:
         await self.inner.close()
 
 
+WALL_FACTOR = 20  # how much slower than the boat's clock the wall clock may run
+
+
 class Rig:
     """The station side of a conformance test; `device()` gives the boat's current pty."""
 
@@ -125,11 +128,24 @@ class Rig:
     def texts(self) -> list[str]:
         return [e.text for _, e in self.events if isinstance(e, StatusTextReceived)]
 
+    def _uptime_s(self) -> float | None:
+        report = self.report
+        return None if report is None else report.uptime_ms / 1000.0
+
     async def until(self, cond, timeout: float) -> None:
-        end = time.monotonic() + timeout
+        """Wait for cond() up to `timeout` seconds of the boat's own clock (its reported
+        uptime: the firmware in QEMU on a busy machine runs several times slower than the
+        wall clock), and at most WALL_FACTOR times that of wall time."""
+        wall_end = time.monotonic() + WALL_FACTOR * timeout
+        start = self._uptime_s()
         while not cond():
-            if time.monotonic() > end:
-                raise AssertionError(f"timed out after {timeout} s; boat report: {self.report}")
+            now = self._uptime_s()
+            boat_s = 0.0 if start is None or now is None else now - start
+            if start is None:
+                start = now
+            if boat_s > timeout or time.monotonic() > wall_end:
+                raise AssertionError(f"timed out after {timeout} s of boat time ({boat_s:.1f} s"
+                                     f" passed on the boat); boat report: {self.report}")
             await asyncio.sleep(0.02)
 
     def position(self) -> tuple[float, float]:
