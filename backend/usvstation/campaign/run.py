@@ -148,8 +148,10 @@ def ray_results(fn: Callable[[T], R], todo: Sequence[T], address: str,
     started = False
     if not ray.is_initialized():
         if address == "local":
+            # at the process pool's priority: Ray's default worker nice of 15 lets any busy
+            # neighbour starve a local campaign (two sim episodes took over 20 min at load 11)
             ray.init(num_cpus=workers or os.cpu_count(), include_dashboard=False,
-                     log_to_driver=False)
+                     log_to_driver=False, _system_config={"worker_niceness": 0})
         else:
             ray.init(address=None if address == "auto" else address, log_to_driver=False)
         started = True
