@@ -6,8 +6,9 @@ Times are the boat's own (its uptime in USV_MISSION_STATE), never the wall clock
 from __future__ import annotations
 
 import asyncio
+import time
 
-from rig import USV_MISSION_ACK, Rig, foreign_codec, msg_id, settle
+from rig import USV_MISSION_ACK, WALL_FACTOR, Rig, foreign_codec, msg_id, settle
 
 from usvstation.link import wire
 from usvstation.link.mavlink import usv_recovery as mav
@@ -69,7 +70,10 @@ def test_a_second_boat_is_counted_not_stored_and_failsafe_stays(boat):
             rig.radio.silent = True
             silent_at = rig.proto.boat_uptime_ms(rig.proto.now)
             fake = other.mav
-            for _ in range(25):  # another boat, same key, 5 Hz, on both sides of the radio
+            # another boat, same key, 5 Hz, on both sides of the radio, for up to 5 s of the
+            # boat's own time (the firmware in QEMU on a busy machine runs slower than ours)
+            wall_end = time.monotonic() + 5.0 * WALL_FACTOR
+            while rig.report.uptime_ms - silent_at < 5000 and time.monotonic() < wall_end:
                 frames = other.encode(fake.heartbeat_encode(
                     mav.MAV_TYPE_SURFACE_BOAT, mav.MAV_AUTOPILOT_GENERIC, 0, 2, 4))
                 frames += other.encode(fake.global_position_int_encode(
@@ -111,7 +115,15 @@ def test_replayed_signed_session_to_a_rebooted_boat_does_nothing(boat):
             for i in range(0, len(recorded), 256):  # the whole session, at line speed
                 await port.write(recorded[i:i + 256])
                 await asyncio.sleep(256 * 10 / 57600)
-            await settle(2.5)
+            # 2.5 s of the boat's own time for the last frames to be judged
+            wall_end = time.monotonic() + 2.5 * WALL_FACTOR
+            seen = None
+            while time.monotonic() < wall_end:
+                await settle(0.1)
+                if reports and seen is None:
+                    seen = reports[-1].uptime_ms
+                if seen is not None and reports[-1].uptime_ms - seen >= 2500:
+                    break
             task.cancel()
             assert reports, "the rebooted boat reports"
             last = reports[-1]
