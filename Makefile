@@ -33,10 +33,11 @@ run: setup
 
 serve: run
 
-# Three workers (pytest-xdist), one module per worker at a time so a module's station
-# fixture starts once: most tests wait on a simulated boat, so three fit on two cores.
+# Four workers (pytest-xdist), one module per worker at a time so a module's station
+# fixture starts once: many tests wait on a simulated boat, so four fit on two cores. The
+# longest modules go first (tests/conftest.py, LONGEST_FIRST).
 test: setup
-	$(BIN)/python -m pytest -n 4 --dist loadscope
+	$(BIN)/python -m pytest -n 4 --dist loadscope --no-loadscope-reorder
 
 # Unit tests only (no servers, browsers, ptys, process pools or benchmarks): under a minute.
 test-fast: setup

@@ -168,7 +168,11 @@ def test_a_run_ends_when_the_boat_reports_done_between_telemetry_frames(browser,
         assert started.status_code == 200, started.text
         done = st.wait(f"/api/missions/{mission['id']}", "state", ("active",), 120)
         assert done["state"] == "completed"
-        runs = c.get("/api/runs").json()
+        # the run is closed in the store just after the mission's state changes
+        deadline = time.monotonic() + 20
+        while (runs := c.get("/api/runs").json())[-1]["state"] == "active" \
+                and time.monotonic() < deadline:
+            time.sleep(0.1)
         assert runs[-1]["state"] == "completed"
         expect(page.locator("#mission-state")).to_contain_text("completed", timeout=10_000)
         # and the next plan uploads: nothing blocks it

@@ -578,6 +578,30 @@ def link_start(restarts: int = 3) -> dict[str, Any]:
             "failsafe_after_ms": 3000}
 
 
+
+def _station_phases(station: Station, out: dict[str, Any], seconds: float, half_open: int,
+                    progress: Callable[[str], None], only: str | None = None) -> None:
+    """The websocket, planning and abuse phases on `station` (`only`: one of them): each
+    records the station's worst loop lag since its start and its heartbeat gaps."""
+    if only in (None, "websocket"):
+        progress("telemetry at 50 Hz, 20 websocket clients")
+        pause(2.0)  # link up, telemetry flowing
+        out["websocket"] = asyncio.run(websocket_latency(station.url, 20, seconds))
+        health = httpx.get(station.url + "/api/health", timeout=30).json()
+        out["loop_lag_worst_ms_websocket"] = health["loop_lag_ms"]["worst_since_start"]
+        out["websocket"]["link_heartbeat_gap_ms"] = health["link_heartbeat_gap_ms"]
+    if only in (None, "planning"):
+        progress("4 plan workers, health probed while 4 plans run")
+        out["health_under_planning"] = asyncio.run(health_under_planning(station.url, 4,
+                                                                         seconds))
+        health = httpx.get(station.url + "/api/health", timeout=30).json()
+        out["loop_lag_worst_ms_planning"] = health["loop_lag_ms"]["worst_since_start"]
+        out["health_under_planning"]["link_heartbeat_gap_ms"] = health["link_heartbeat_gap_ms"]
+    if only in (None, "abuse"):
+        progress(f"abuse: 50 MB bodies without a token, {half_open} half-open connections")
+        out["abuse"] = abuse(station.url, half_open, seconds)
+
+
 def run_server_bench(quick: bool = False,
                      progress: Callable[[str], None] = lambda _m: None,
                      base_port: int | None = None) -> dict[str, Any]:
@@ -593,33 +617,6 @@ def run_server_bench(quick: bool = False,
         (f" --base-port {base_port}" if base_port is not None else "")
     out: dict[str, Any] = {"command": command, "machine": machine_info(),
                            "load_average": [round(x, 2) for x in os.getloadavg()]}
-    progress("station with telemetry at 50 Hz, 20 websocket clients")
-    station = Station({"USV_STATION_TELEMETRY_HZ": "50"})
-    try:
-        pause(2.0)  # link up, telemetry flowing
-        out["websocket"] = asyncio.run(websocket_latency(station.url, 20, seconds))
-        health = httpx.get(station.url + "/api/health", timeout=30).json()
-        out["loop_lag_worst_ms_websocket"] = health["loop_lag_ms"]["worst_since_start"]
-        out["websocket"]["link_heartbeat_gap_ms"] = health["link_heartbeat_gap_ms"]
-    finally:
-        station.close()
-    progress("station with 4 plan workers, health probed while 4 plans run")
-    station = Station({"USV_STATION_PLAN_WORKERS": "4"})
-    try:
-        out["health_under_planning"] = asyncio.run(health_under_planning(station.url, 4,
-                                                                         seconds))
-        health = httpx.get(station.url + "/api/health", timeout=30).json()
-        out["loop_lag_worst_ms_planning"] = health["loop_lag_ms"]["worst_since_start"]
-        out["health_under_planning"]["link_heartbeat_gap_ms"] = health["link_heartbeat_gap_ms"]
-    finally:
-        station.close()
-    progress(f"station under abuse: 50 MB bodies without a token, {half_open} half-open "
-             "connections")
-    station = Station({})
-    try:
-        out["abuse"] = abuse(station.url, half_open, seconds)
-    finally:
-        station.close()
     floods = {
         "open_path_flood": (16, _open_path_load, "1 MiB JSON bodies, open paths"),
         "viewer_pages": (6, functools.partial(_viewer_page_load, rows=page_rows),
@@ -627,10 +624,12 @@ def run_server_bench(quick: bool = False,
         "half_open": (1, lambda url, stop, o: _half_open_load(url, half_open_flood, stop, o),
                       f"{half_open_flood} half-open connections"),
     }
-    if quick:  # one station flying one mission takes the three floods in turn
-        progress("floods: open paths, viewer pages, half-open, on one station")
-        station = Station({}, prepare=prepare_data(page_rows + 10_000))
+    if quick:  # one station takes every phase in turn, its worst figures since its start
+        station = Station({"USV_STATION_TELEMETRY_HZ": "50", "USV_STATION_PLAN_WORKERS": "4"},
+                          prepare=prepare_data(page_rows + 10_000))
         try:
+            _station_phases(station, out, seconds, half_open, progress)
+            progress("floods: open paths, viewer pages, half-open, on the same station")
             fly_mission(station.url)
             for name, (clients, load, what) in floods.items():
                 out[name] = measure_flood(station, seconds, clients, load, what=what,
@@ -638,6 +637,13 @@ def run_server_bench(quick: bool = False,
         finally:
             station.close()
     else:
+        for env, phase in (({"USV_STATION_TELEMETRY_HZ": "50"}, "websocket"),
+                           ({"USV_STATION_PLAN_WORKERS": "4"}, "planning"), ({}, "abuse")):
+            station = Station(env)
+            try:
+                _station_phases(station, out, seconds, half_open, progress, only=phase)
+            finally:
+                station.close()
         for name, (clients, load, what) in floods.items():
             progress(f"{name}: {what}, {clients} client(s)")
             rows = page_rows + 10_000 if name == "viewer_pages" else 0
