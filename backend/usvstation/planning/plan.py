@@ -8,7 +8,6 @@ from dataclasses import replace
 from typing import Any
 
 import numpy as np
-from scipy import ndimage
 
 from usvstation.geometry import inflated_radius
 from usvstation.planning.budget import Budget, Clock, cpu_clock
@@ -411,6 +410,8 @@ def enclosing_obstacles(problem: Problem, cell: float = 0.5) -> list[int] | None
     boxes = [_cells(c, rad, gx, gy) for c, rad in zip(f.centre[static], r, strict=True)]
     for c, rad, box in zip(f.centre[static], r, boxes, strict=True):
         blocked[box] |= (xx[box] - c[0]) ** 2 + (yy[box] - c[1]) ** 2 < rad**2
+    from scipy import ndimage  # here: serve starts without scipy
+
     labels, _ = ndimage.label(~blocked)
 
     def label_at(p: np.ndarray) -> int:

@@ -5,7 +5,13 @@ timeout or cancel included, starts with them instead of loading them itself."""
 
 from __future__ import annotations
 
-import usvstation.planning.registry  # noqa: F401  (the planners, numpy, scipy)
+# the planners import scipy where they use it (serve starts without it): the workers have it
+import scipy.interpolate
+import scipy.ndimage
+import scipy.optimize
+import scipy.spatial  # noqa: F401
+
+import usvstation.planning.registry  # noqa: F401  (the planners, numpy)
 from usvstation.planning.warm import warm
 
 warm()

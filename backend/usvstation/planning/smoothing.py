@@ -13,11 +13,15 @@ control points on the polygon where it hits, before giving up (issue 27).
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-from scipy.interpolate import BSpline
 
 from usvstation.planning import kernel_geom
 from usvstation.planning.xyt import ObstacleField
+
+if TYPE_CHECKING:
+    from scipy.interpolate import BSpline
 
 SAMPLES_PER_SEGMENT = 12
 
@@ -28,6 +32,8 @@ def clamped_bspline(control: np.ndarray, degree: int) -> BSpline:
     k = min(degree, n - 1)
     inner = np.linspace(0.0, 1.0, n - k + 1)[1:-1]
     knots = np.concatenate([np.zeros(k + 1), inner, np.ones(k + 1)])
+    from scipy.interpolate import BSpline  # here: serve starts without scipy
+
     return BSpline(knots, control, k)
 
 

@@ -180,7 +180,7 @@ def worker_main(conn: Connection, parent_pid: int, memory_mb: int) -> None:
     """A plan worker: ("ready",), then one reply per (scenario, planner, seed) request."""
     die_with_parent(parent_pid)
     init_worker(memory_mb)
-    import usvstation.planning.registry  # noqa: F401  (numpy/scipy once, before the first job)
+    import usvstation.planning.preload  # noqa: F401  (as the forkserver preloads it)
     from usvstation.planning.warm import warm
 
     warm()  # the compiled kernels loaded once, before the first job (planning/warm.py)

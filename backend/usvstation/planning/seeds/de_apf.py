@@ -25,7 +25,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import differential_evolution
 
 from usvstation.geometry import angle_diff
 from usvstation.planning.seeds.common import World
@@ -199,6 +198,8 @@ def plan_de_apf(start: np.ndarray, goal: np.ndarray, world: World, cruise: float
         rng = np.random.default_rng([seed, x.shape[1]])
         paths, ok, _ = rollout(x, start, goal, world, cruise, o, rng)
         return -score(paths, ok, goal, world, cruise, o.step, influence)
+
+    from scipy.optimize import differential_evolution  # here: serve starts without scipy
 
     res = differential_evolution(
         objective, BOUNDS, strategy="rand1bin", maxiter=o.maxiter, popsize=o.popsize,

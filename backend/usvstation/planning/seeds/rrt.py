@@ -17,12 +17,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING
 
 import numpy as np
-from scipy.interpolate import make_interp_spline
-from scipy.spatial import cKDTree
 
 from usvstation.planning.seeds.common import World
+
+if TYPE_CHECKING:
+    from scipy.spatial import cKDTree
 
 
 @dataclass(frozen=True)
@@ -60,6 +62,8 @@ def rrt_star(start: np.ndarray, goal: np.ndarray, world: World, cruise: float,
     tree = Tree(np.zeros((cap, 2)), np.full(cap, -1), np.zeros(cap), 1)
     tree.pts[0] = start
     children: list[list[int]] = [[] for _ in range(cap)]
+    from scipy.spatial import cKDTree  # here: serve starts without scipy
+
     kd: cKDTree | None = None
     kd_n = 0
     xmin, xmax, ymin, ymax = bounds
@@ -237,6 +241,8 @@ def bspline_path(path: np.ndarray, spacing: float) -> np.ndarray:
         return path
     seg = np.hypot(*np.diff(path, axis=0).T)
     u = np.concatenate([[0.0], np.cumsum(np.sqrt(seg))])  # centripetal parameter
+    from scipy.interpolate import make_interp_spline
+
     spl = make_interp_spline(u, path, k=3)
     n = max(int(seg.sum() / spacing), len(path) * 3)
     return spl(np.linspace(0.0, u[-1], n + 1))
