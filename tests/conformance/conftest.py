@@ -19,6 +19,7 @@ import os
 import re
 import subprocess
 import sys
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -26,18 +27,21 @@ import pytest
 sys.path.insert(0, str(Path(__file__).parent))
 
 EXE = os.path.join(os.path.dirname(sys.executable), "usv-station")
-BOATS: dict[str, list[str]] = {
-    "python": [EXE, "sim", "--link", "pty", "--vehicle", "kinematic", "--scenario", "case1",
-               "--telemetry-hz", "5", "--seed", "1"],
-}
-# the C boat (protocol/c/boat), built once per test session when a C compiler exists
-from c_boat_support import conformance_argv  # noqa: E402
-
-BOATS.update(conformance_argv())
-# the firmware image in QEMU, built once per test session when the ARM tools exist
+PYTHON_BOAT = [EXE, "sim", "--link", "pty", "--vehicle", "kinematic", "--scenario", "case1",
+               "--telemetry-hz", "5", "--seed", "1"]
+from c_boat_support import c_compiler, conformance_argv  # noqa: E402
 from hil_support import conformance_argv as qemu_argv  # noqa: E402
+from hil_support import qemu_expected  # noqa: E402
 
-BOATS.update(qemu_argv())
+# each boat's command line, made when a test first starts that boat: the C boat
+# (protocol/c/boat) when a C compiler exists, the firmware image in QEMU when the ARM tools
+# exist (or under CI), each built once per test process (a worker that never runs these
+# tests builds nothing)
+BOATS: dict[str, Callable[[], list[str]]] = {"python": lambda: PYTHON_BOAT}
+if c_compiler() is not None:
+    BOATS["c"] = lambda: conformance_argv()["c"]
+if qemu_expected():
+    BOATS["qemu"] = lambda: qemu_argv()["qemu"]
 
 
 class BoatProcess:
@@ -84,7 +88,7 @@ def boat(request, tmp_path):
 
     key_path = tmp_path / "link.key"
     write_key(key_path)
-    proc = BoatProcess(BOATS[request.param], key_path, tmp_path / "nv.json")
+    proc = BoatProcess(BOATS[request.param](), key_path, tmp_path / "nv.json")
     proc.key_path = key_path
     yield proc
     proc.stop()

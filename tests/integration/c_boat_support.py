@@ -10,6 +10,7 @@ the wall clock of this machine.
 from __future__ import annotations
 
 import contextlib
+import functools
 import os
 import re
 import shutil
@@ -48,6 +49,7 @@ def build_c_boat(build_dir: Path, target: str = "all") -> Path:
     return build_dir / name
 
 
+@functools.cache
 def conformance_argv() -> dict[str, list[str]]:
     """The C boat's entry for tests/conformance BOATS: the host program built once into a
     temporary directory (removed at exit), on a new pty, placed at case1's start; {} when no
