@@ -45,10 +45,16 @@ async def live(station: StationDep, ws: WebSocket) -> None:
                                                 "reasons": h["reasons"]}}})
         sender = asyncio.create_task(_pump(ws, sub))
         receiver = asyncio.create_task(_drain(ws))
-        _, pending = await asyncio.wait({sender, receiver},
-                                           return_when=asyncio.FIRST_COMPLETED)
+        done, pending = await asyncio.wait({sender, receiver},
+                                              return_when=asyncio.FIRST_COMPLETED)
         for task in pending:
             task.cancel()
+        # every task's end collected: a send to a client that has just gone ends the sender
+        # with WebSocketDisconnect (or starlette's RuntimeError after a close), an ordinary
+        # end, not "Task exception was never retrieved" with a traceback in the log
+        for task in (*done, *pending):
+            with contextlib.suppress(asyncio.CancelledError, WebSocketDisconnect, RuntimeError):
+                await task
     except WebSocketDisconnect:
         pass
     finally:
