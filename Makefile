@@ -34,15 +34,14 @@ run: setup
 serve: run
 
 # Four workers (pytest-xdist), one module per worker at a time so a module's station
-# fixture starts once: many tests wait on a simulated boat, so four fit on two cores. The
-# longest modules go first (tests/conftest.py, LONGEST_FIRST).
+# fixture starts once: many tests wait on a simulated boat, so four fit on two cores.
 # The tests write Python's bytecode caches (__pycache__, ignored by git) even where
 # PYTHONDONTWRITEBYTECODE is set: without them every station, boat and CLI process a test
 # starts compiles the package again (about 1 s of CPU each), and every worker rewrites the
 # test modules' asserts again (5 s).
 test: setup
 	env -u PYTHONDONTWRITEBYTECODE $(BIN)/python -m compileall -q -j 0 backend
-	env -u PYTHONDONTWRITEBYTECODE $(BIN)/python -m pytest -n 4 --dist loadscope --no-loadscope-reorder
+	env -u PYTHONDONTWRITEBYTECODE $(BIN)/python -m pytest -n 4 --dist loadscope
 
 # Unit tests only (no servers, browsers, ptys, process pools or benchmarks): under a minute.
 test-fast: setup
