@@ -147,6 +147,8 @@ def test_the_3d_view_opens_from_the_console(page, station, artifacts):
     with page.expect_popup() as popup:
         link.click()
     view = popup.value
+    # a small window: the scene is drawn by WebGL in software (SwiftShader), every frame
+    view.set_viewport_size({"width": 640, "height": 400})
     expect(view.get_by_text("Planned path", exact=True)).to_be_visible(timeout=30_000)
     expect(view.get_by_text("Follow the live run")).to_be_visible()
     expect(view.locator("canvas").first).to_be_visible()
