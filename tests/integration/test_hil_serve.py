@@ -117,7 +117,9 @@ def test_serve_flies_the_firmware_in_qemu_then_hold_and_abort_act_and_the_run_is
     off_path = max(distance_to_path(r["x"], r["y"], wps) for r in moving)
     print(f"largest distance from the planned path while RUNNING: {off_path:.1f} m")
     assert off_path < 8.0
-    assert moving[-1]["x"] < x0 - MOVED_M
+    # the stored run went as far as the live view saw it go (the furthest row: with the GPS
+    # noise of about 1 m a later row can read a few decimetres further back)
+    assert min(r["x"] for r in moving) < x0 - MOVED_M
     # the 8 KB chip's stack after a whole session (upload, readback, commands, telemetry)
     print(f"QEMU firmware stack: {used} B used at most, {spare} B never touched")
     assert spare >= 256
