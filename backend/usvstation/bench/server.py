@@ -153,6 +153,7 @@ async def health_under_planning(url: str, plans_at_once: int, seconds: float) ->
     return {"plans_at_once": plans_at_once, "seconds": seconds,
             "plans_completed": sum(results[1:]),
             "running_median": statistics.median(running_seen) if running_seen else 0,
+            "running_max": max(running_seen, default=0),
             **_percentiles(latencies)}
 
 
