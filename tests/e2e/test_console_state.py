@@ -171,10 +171,8 @@ def test_a_run_ends_when_the_boat_reports_done_between_telemetry_frames(browser,
         done = st.wait(f"/api/missions/{mission['id']}", "state", ("active",), 180)
         assert done["state"] == "completed", (done, c.get("/api/boat").json())
         # the run is closed in the store just after the mission's state changes
-        deadline = time.monotonic() + 20
-        while (runs := c.get("/api/runs").json())[-1]["state"] == "active" \
-                and time.monotonic() < deadline:
-            time.sleep(0.1)
+        runs = st.wait_until("/api/runs", lambda runs: runs[-1]["state"] != "active", 20,
+                             "the run closed")
         assert runs[-1]["state"] == "completed"
         expect(page.locator("#mission-state")).to_contain_text("completed", timeout=10_000)
         # and the next plan uploads: nothing blocks it

@@ -4,7 +4,9 @@ from __future__ import annotations
 
 import signal
 import time
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import httpx
 
@@ -46,10 +48,17 @@ class StationProcess(ServeProcess):
         raise AssertionError(f"the boat link is not up after {timeout} s: {boat['link']}")
 
     def wait(self, path: str, key: str, pending: tuple, timeout: float) -> dict:
+        """GET `path` until its `key` is no longer one of `pending`."""
+        return self.wait_until(path, lambda body: body[key] not in pending, timeout,
+                               f"{path} {key} other than {pending}")
+
+    def wait_until(self, path: str, cond: Callable[[Any], bool], timeout: float,
+                   what: str) -> Any:
+        """GET `path` until cond(body) holds; the body. AssertionError after `timeout` s."""
         deadline = time.monotonic() + timeout
-        while time.monotonic() < deadline:
+        while True:
             body = self.client.get(path).json()
-            if body[key] not in pending:
+            if cond(body):
                 return body
+            assert time.monotonic() < deadline, f"{what} not seen in {timeout} s: {body}"
             time.sleep(0.05)
-        raise AssertionError(f"{path} still {body[key]} after {timeout} s")

@@ -22,16 +22,6 @@ MOVED_M = 10.0  # along the plan before HOLD
 HOLD_SPEED = 0.6  # m/s: station keeping returns to the hold point at 0.4 m/s at most
 
 
-def wait_for(st: StationProcess, path: str, cond, timeout: float, what: str) -> dict:
-    deadline = time.monotonic() + timeout
-    while True:
-        body = st.client.get(path).json()
-        if cond(body):
-            return body
-        assert time.monotonic() < deadline, f"{what} not seen in {timeout} s: {body}"
-        time.sleep(0.05)
-
-
 def distance_to_path(x: float, y: float, wps: list[dict]) -> float:
     """Distance (m) from a point to the plan's polyline (ramp frame)."""
     best = math.inf
@@ -68,7 +58,7 @@ def test_serve_flies_the_firmware_in_qemu_then_hold_and_abort_act_and_the_run_is
         r = st.client.post("/api/missions", json={"plan_id": plan["id"]})
         assert r.status_code == 202, r.text
         mission = r.json()
-        verified = wait_for(st, f"/api/missions/{mission['id']}",
+        verified = st.wait_until(f"/api/missions/{mission['id']}",
                             lambda b: b["state"] in ("verified", "failed"), 60, "verified")
         assert verified["state"] == "verified", verified
         check = st.client.get(f"/api/missions/{mission['id']}/verify")
@@ -77,23 +67,23 @@ def test_serve_flies_the_firmware_in_qemu_then_hold_and_abort_act_and_the_run_is
                            json={"command": "start", "mission_id": mission["id"]})
         assert r.status_code == 200 and r.json()["state"] == "RUNNING", r.text
         x0 = wps[0]["x"]
-        running = wait_for(st, "/api/boat", lambda b: b["telemetry"]["x"] < x0 - MOVED_M,
+        running = st.wait_until("/api/boat", lambda b: b["telemetry"]["x"] < x0 - MOVED_M,
                            120, f"the boat {MOVED_M} m along the plan")
         assert running["boat"]["state"] == "RUNNING"
         assert running["boat"]["mission_crc32"] == verified["crc32"]
 
         r = st.client.post("/api/boat/command", json={"command": "hold"})
         assert r.status_code == 200 and r.json()["state"] == "HOLD", r.text
-        held = wait_for(st, "/api/boat", lambda b: b["telemetry"]["speed"] < HOLD_SPEED
+        held = st.wait_until("/api/boat", lambda b: b["telemetry"]["speed"] < HOLD_SPEED
                         and b["boat"]["state"] == "HOLD", 120, "the boat slowed in HOLD")
         t = held["telemetry"]
         assert math.hypot(t["x"] - running["telemetry"]["x"],
                           t["y"] - running["telemetry"]["y"]) < 30.0
         r = st.client.post("/api/boat/command", json={"command": "abort"})
         assert r.status_code == 200 and r.json()["state"] == "ABORTED", r.text
-        wait_for(st, "/api/boat", lambda b: b["telemetry"]["thrust_left"] == 0.0
+        st.wait_until("/api/boat", lambda b: b["telemetry"]["thrust_left"] == 0.0
                  and b["telemetry"]["thrust_right"] == 0.0, 60, "the propellers stopped")
-        aborted = wait_for(st, f"/api/missions/{mission['id']}",
+        aborted = st.wait_until(f"/api/missions/{mission['id']}",
                            lambda b: b["state"] == "aborted", 60, "the mission aborted")
         run_id = aborted["run"]
         runs = st.client.get("/api/runs").json()

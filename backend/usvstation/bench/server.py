@@ -579,28 +579,23 @@ def link_start(restarts: int = 3) -> dict[str, Any]:
             "failsafe_after_ms": 3000}
 
 
+def _websocket_phase(station: Station, out: dict[str, Any], seconds: float) -> None:
+    pause(2.0)  # link up, telemetry flowing
+    out["websocket"] = asyncio.run(websocket_latency(station.url, 20, seconds))
+    health = httpx.get(station.url + "/api/health", timeout=30).json()
+    out["loop_lag_worst_ms_websocket"] = health["loop_lag_ms"]["worst_since_start"]
+    out["websocket"]["link_heartbeat_gap_ms"] = health["link_heartbeat_gap_ms"]
 
-def _station_phases(station: Station, out: dict[str, Any], seconds: float, half_open: int,
-                    progress: Callable[[str], None], only: str | None = None) -> None:
-    """The websocket, planning and abuse phases on `station` (`only`: one of them): each
-    records the station's worst loop lag since its start and its heartbeat gaps."""
-    if only in (None, "websocket"):
-        progress("telemetry at 50 Hz, 20 websocket clients")
-        pause(2.0)  # link up, telemetry flowing
-        out["websocket"] = asyncio.run(websocket_latency(station.url, 20, seconds))
-        health = httpx.get(station.url + "/api/health", timeout=30).json()
-        out["loop_lag_worst_ms_websocket"] = health["loop_lag_ms"]["worst_since_start"]
-        out["websocket"]["link_heartbeat_gap_ms"] = health["link_heartbeat_gap_ms"]
-    if only in (None, "planning"):
-        progress("4 plan workers, health probed while 4 plans run")
-        out["health_under_planning"] = asyncio.run(health_under_planning(station.url, 4,
-                                                                         seconds))
-        health = httpx.get(station.url + "/api/health", timeout=30).json()
-        out["loop_lag_worst_ms_planning"] = health["loop_lag_ms"]["worst_since_start"]
-        out["health_under_planning"]["link_heartbeat_gap_ms"] = health["link_heartbeat_gap_ms"]
-    if only in (None, "abuse"):
-        progress(f"abuse: 50 MB bodies without a token, {half_open} half-open connections")
-        out["abuse"] = abuse(station.url, half_open, seconds)
+
+def _planning_phase(station: Station, out: dict[str, Any], seconds: float) -> None:
+    out["health_under_planning"] = asyncio.run(health_under_planning(station.url, 4, seconds))
+    health = httpx.get(station.url + "/api/health", timeout=30).json()
+    out["loop_lag_worst_ms_planning"] = health["loop_lag_ms"]["worst_since_start"]
+    out["health_under_planning"]["link_heartbeat_gap_ms"] = health["link_heartbeat_gap_ms"]
+
+
+def _abuse_phase(station: Station, out: dict[str, Any], seconds: float, half_open: int) -> None:
+    out["abuse"] = abuse(station.url, half_open, seconds)
 
 
 def run_server_bench(quick: bool = False,
@@ -625,11 +620,23 @@ def run_server_bench(quick: bool = False,
         "half_open": (1, lambda url, stop, o: _half_open_load(url, half_open_flood, stop, o),
                       f"{half_open_flood} half-open connections"),
     }
+    # each phase: what it measures, the station settings it needs, the measure; each records
+    # the station's worst loop lag since its start (and its heartbeat gaps)
+    phases = (
+        ("telemetry at 50 Hz, 20 websocket clients", {"USV_STATION_TELEMETRY_HZ": "50"},
+         _websocket_phase),
+        ("4 plan workers, health probed while 4 plans run", {"USV_STATION_PLAN_WORKERS": "4"},
+         _planning_phase),
+        (f"abuse: 50 MB bodies without a token, {half_open} half-open connections", {},
+         functools.partial(_abuse_phase, half_open=half_open)),
+    )
     if quick:  # one station takes every phase in turn, its worst figures since its start
-        station = Station({"USV_STATION_TELEMETRY_HZ": "50", "USV_STATION_PLAN_WORKERS": "4"},
+        station = Station({k: v for _, env, _ in phases for k, v in env.items()},
                           prepare=prepare_data(page_rows + 10_000))
         try:
-            _station_phases(station, out, seconds, half_open, progress)
+            for what, _, phase in phases:
+                progress(what)
+                phase(station, out, seconds)
             progress("floods: open paths, viewer pages, half-open, on the same station")
             fly_mission(station.url)
             for name, (clients, load, what) in floods.items():
@@ -638,11 +645,11 @@ def run_server_bench(quick: bool = False,
         finally:
             station.close()
     else:
-        for env, phase in (({"USV_STATION_TELEMETRY_HZ": "50"}, "websocket"),
-                           ({"USV_STATION_PLAN_WORKERS": "4"}, "planning"), ({}, "abuse")):
+        for what, env, phase in phases:
+            progress(f"station with {what}")
             station = Station(env)
             try:
-                _station_phases(station, out, seconds, half_open, progress, only=phase)
+                phase(station, out, seconds)
             finally:
                 station.close()
         for name, (clients, load, what) in floods.items():

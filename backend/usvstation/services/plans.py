@@ -180,10 +180,9 @@ def worker_main(conn: Connection, parent_pid: int, memory_mb: int) -> None:
     """A plan worker: ("ready",), then one reply per (scenario, planner, seed) request."""
     die_with_parent(parent_pid)
     init_worker(memory_mb)
-    import usvstation.planning.preload  # noqa: F401  (as the forkserver preloads it)
-    from usvstation.planning.warm import warm
-
-    warm()  # the compiled kernels loaded once, before the first job (planning/warm.py)
+    # the planners, scipy and the compiled kernels (planning/warm.py), once, before the first
+    # job: already there when the worker forks from the forkserver that preloaded them
+    import usvstation.planning.preload  # noqa: F401
     conn.send(("ready", os.getpid()))
     while True:
         try:
